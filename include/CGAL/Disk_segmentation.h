@@ -1,0 +1,17 @@
+// Copyright (c) 2026 The Disk_segmentation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Umbrella header of the Disk_segmentation package.
+
+#ifndef CGAL_DISK_SEGMENTATION_H
+#define CGAL_DISK_SEGMENTATION_H
+
+#include <CGAL/Disk_segmentation/Input_error.h>
+#include <CGAL/Disk_segmentation/parameters.h>
+#include <CGAL/Disk_segmentation/topology.h>
+#include <CGAL/Disk_segmentation/voronoi_fps_segmentation.h>
+#include <CGAL/Disk_segmentation/refine_to_topological_disks.h>
+#include <CGAL/Disk_segmentation/merge_disk_regions.h>
+#include <CGAL/Disk_segmentation/segment_into_disks.h>
+
+#endif // CGAL_DISK_SEGMENTATION_H

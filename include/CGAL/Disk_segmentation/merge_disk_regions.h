@@ -1,0 +1,167 @@
+// Copyright (c) 2026 The Disk_segmentation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_DISK_SEGMENTATION_MERGE_DISK_REGIONS_H
+#define CGAL_DISK_SEGMENTATION_MERGE_DISK_REGIONS_H
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Disk_segmentation/Input_error.h>
+#include <CGAL/Disk_segmentation/parameters.h>
+#include <CGAL/Disk_segmentation/internal/Disk_region_merger.h>
+#include <CGAL/Disk_segmentation/internal/Face_partition.h>
+#include <CGAL/Disk_segmentation/internal/Indexed_triangle_mesh.h>
+#include <CGAL/Disk_segmentation/internal/Region_topology.h>
+
+#include <CGAL/assertions.h>
+#include <CGAL/number_type_config.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Disk_segmentation {
+
+/// \ingroup PkgDiskSegmentationRef
+/// The paper's threshold \f$ \epsilon_N = 2 / \sqrt{N \cot(\pi / N)} \f$
+/// (its Eq. 5): one side of a regular `N`-gon over the square root of its
+/// area, i.e. the merge score of a regular `N`-gon and a smaller neighbor
+/// sharing one full side. `regular_polygon_threshold(5)` (about 0.7624) is
+/// the default of `merge_disk_regions()`.
+inline double regular_polygon_threshold(unsigned int N)
+{
+  CGAL_precondition(N >= 3);
+  return 2. / std::sqrt(N / std::tan(CGAL_PI / N));
+}
+
+namespace internal {
+
+inline double checked_merge_threshold(double eps)
+{
+  if(!(eps >= 0.) || !std::isfinite(eps))
+    throw Input_error("merge_threshold must be a finite number >= 0");
+  return eps;
+}
+
+template <typename NamedParameters>
+double merge_threshold_parameter(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  return checked_merge_threshold(
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::merge_threshold),
+                     regular_polygon_threshold(5)));
+}
+
+// `labels` numbers disk regions canonically; merges them and renumbers.
+inline std::size_t merge_regions(const Indexed_triangle_mesh& m, std::vector<Index>& labels,
+                                 std::size_t number_of_regions, double threshold)
+{
+  Disk_region_merger merger(m, labels, number_of_regions);
+  merger.run(threshold);
+  return make_canonical(labels);
+}
+
+} // namespace internal
+
+/// \ingroup PkgDiskSegmentationRef
+///
+/// Greedily merges adjacent regions of a partition of `tm` into topological
+/// disks while every region stays a disk (the paper's Algorithm 2).
+///
+/// Two adjacent disks `Si`, `Sj` are a candidate when their union is a disk,
+/// that is when their common part (shared vertices and edges) is one open
+/// path, and when their score
+/// \f$ J_{ij} = \ell_{ij} / \sqrt{\max(A_i, A_j)} \f$ (shared boundary length
+/// over the square root of the larger area) is at least the threshold. The
+/// candidate with the highest score merges first (ties: smaller ids first),
+/// then the scores of the merged region are updated, until no candidate is
+/// left. A higher threshold stops earlier along the same sequence of merges,
+/// so it never yields fewer regions.
+///
+/// On return, the ids are `0` to the returned value minus one, numbered in
+/// the order of each region's first face in `faces(tm)`.
+///
+/// @tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
+///         whose faces are triangles
+/// @tparam FacePatchMap a model of `ReadWritePropertyMap` with
+///         `face_descriptor` as key type and an integral value type
+/// @tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+///
+/// @param tm a triangle mesh, manifold, without garbage
+/// @param face_patch_map a partition whose regions (faces with equal values)
+///        are all topological disks; receives the merged partition
+/// @param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{merge_threshold}
+///     \cgalParamDescription{the score threshold `eps`}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`regular_polygon_threshold(5)`, about 0.7624, the paper's best setting}
+///     \cgalParamExtra{must be finite and >= 0; 0 merges as long as the union stays a disk}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key type and the traits' `Point_3` as value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{an instance of a geometric traits class, used to read coordinates}
+///     \cgalParamType{a model of `Kernel`}
+///     \cgalParamDefault{a \cgal Kernel deduced from the point type}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_index_map}
+///     \cgalParamDescription{a property map associating to each face of `tm` a unique index in `[0, num_faces(tm))`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `face_descriptor` as key type and `std::size_t` as value type}
+///     \cgalParamDefault{an automatically indexed internal map}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in `[0, num_vertices(tm))`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key type and `std::size_t` as value type}
+///     \cgalParamDefault{an automatically indexed internal map}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// @return the number of regions after merging (never more than before)
+///
+/// @throws Input_error as `voronoi_fps_segmentation()` does, if the
+///         threshold is negative or not finite, or if a region is not a
+///         topological disk (run `refine_to_topological_disks()` first).
+template <typename TriangleMesh, typename FacePatchMap,
+          typename NamedParameters = parameters::Default_named_parameters>
+std::size_t merge_disk_regions(const TriangleMesh& tm,
+                               FacePatchMap face_patch_map,
+                               const NamedParameters& np = parameters::default_values())
+{
+  const double threshold = internal::merge_threshold_parameter(np);
+
+  internal::Indexed_triangle_mesh m;
+  std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> face_handles;
+  internal::build_indexed_triangle_mesh(tm, np, m, face_handles);
+
+  const std::vector<std::vector<internal::Index> > regions =
+    internal::group_faces_by_label(internal::read_face_labels(face_handles, face_patch_map));
+  internal::Region_topology topology(m);
+  std::vector<internal::Index> labels(m.number_of_faces());
+  for(internal::Index r = 0; r < regions.size(); ++r)
+  {
+    if(!topology.is_disk(regions[r]))
+      throw Input_error("merge_disk_regions: the region of face #" + std::to_string(regions[r].front()) +
+                        " is not a topological disk; run refine_to_topological_disks first");
+    for(internal::Index f : regions[r]) labels[f] = r;
+  }
+
+  const std::size_t count = internal::merge_regions(m, labels, regions.size(), threshold);
+  internal::write_face_labels(face_handles, labels, face_patch_map);
+  return count;
+}
+
+} // namespace Disk_segmentation
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_DISK_SEGMENTATION_MERGE_DISK_REGIONS_H

@@ -1,0 +1,127 @@
+// Copyright (c) 2026 The Disk_segmentation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Named parameters of the Disk_segmentation package.
+//
+// CGAL 5.5 stamps its chaining builders (`.vertex_point_map(...)`, ...) out of
+// one list and offers no hook to add names, so the package keeps its own
+// parameter pack type that derives from `CGAL::Named_function_parameters`,
+// re-stamps CGAL's builders and adds the package's. CGAL's lookup helpers
+// (`get_parameter`, `choose_parameter`, `is_default_parameter`) work on it
+// unchanged because they only see the base class.
+
+#ifndef CGAL_DISK_SEGMENTATION_PARAMETERS_H
+#define CGAL_DISK_SEGMENTATION_PARAMETERS_H
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+namespace CGAL {
+namespace Disk_segmentation {
+
+namespace internal_np {
+
+// Tags of the package's own named parameters.
+enum number_of_seeds_t { number_of_seeds };
+enum number_of_subsamples_t { number_of_subsamples };
+enum merge_threshold_t { merge_threshold };
+enum first_seed_t { first_seed };
+enum seeds_output_iterator_t { seeds_output_iterator };
+
+} // namespace internal_np
+
+/// \ingroup PkgDiskSegmentationRef
+/// Named parameter pack of the package. It behaves like
+/// `CGAL::Named_function_parameters` (and is one), and also offers the
+/// package's own parameters, so that CGAL's and the package's parameters
+/// chain in any order, e.g.
+/// `parameters::number_of_seeds(20).vertex_point_map(vpm).merge_threshold(0.6)`.
+template <typename T, typename Tag, typename Base = CGAL::internal_np::No_property>
+struct Named_function_parameters
+  : public CGAL::Named_function_parameters<T, Tag, Base>
+{
+  typedef CGAL::Named_function_parameters<T, Tag, Base> CGAL_base;
+  typedef typename CGAL_base::base base;
+  typedef Named_function_parameters<T, Tag, Base> self;
+
+  Named_function_parameters() : CGAL_base() {}
+  Named_function_parameters(const T& v) : CGAL_base(v) {}
+  Named_function_parameters(const T& v, const Base& b) : CGAL_base(v, b) {}
+
+#define CGAL_add_named_parameter(X, Y, Z)                                         \
+  template <typename K>                                                           \
+  Named_function_parameters<K, CGAL::internal_np::X, self> Z(const K& k) const    \
+  {                                                                               \
+    return Named_function_parameters<K, CGAL::internal_np::X, self>(k, *this);   \
+  }
+#include <CGAL/STL_Extension/internal/parameters_interface.h>
+#undef CGAL_add_named_parameter
+
+#define CGAL_DISK_SEGMENTATION_ADD_PARAMETER(X, Z)                                \
+  template <typename K>                                                           \
+  Named_function_parameters<K, internal_np::X, self> Z(const K& k) const          \
+  {                                                                               \
+    return Named_function_parameters<K, internal_np::X, self>(k, *this);         \
+  }
+  CGAL_DISK_SEGMENTATION_ADD_PARAMETER(number_of_seeds_t, number_of_seeds)
+  CGAL_DISK_SEGMENTATION_ADD_PARAMETER(number_of_subsamples_t, number_of_subsamples)
+  CGAL_DISK_SEGMENTATION_ADD_PARAMETER(merge_threshold_t, merge_threshold)
+  CGAL_DISK_SEGMENTATION_ADD_PARAMETER(first_seed_t, first_seed)
+  CGAL_DISK_SEGMENTATION_ADD_PARAMETER(seeds_output_iterator_t, seeds_output_iterator)
+#undef CGAL_DISK_SEGMENTATION_ADD_PARAMETER
+};
+
+namespace parameters {
+
+typedef Named_function_parameters<bool, CGAL::internal_np::all_default_t>
+  Default_named_parameters;
+
+/// \ingroup PkgDiskSegmentationRef
+/// An empty parameter pack: every parameter takes its default value.
+inline Default_named_parameters default_values()
+{
+  return Default_named_parameters();
+}
+
+#define CGAL_add_named_parameter(X, Y, Z)                                         \
+  template <typename K>                                                           \
+  Named_function_parameters<K, CGAL::internal_np::X> Z(const K& k)                \
+  {                                                                               \
+    return Named_function_parameters<K, CGAL::internal_np::X>(k);                 \
+  }
+#include <CGAL/STL_Extension/internal/parameters_interface.h>
+#undef CGAL_add_named_parameter
+
+#define CGAL_DISK_SEGMENTATION_ADD_PARAMETER(X, Z)                                \
+  template <typename K>                                                           \
+  Named_function_parameters<K, internal_np::X> Z(const K& k)                      \
+  {                                                                               \
+    return Named_function_parameters<K, internal_np::X>(k);                       \
+  }
+/// \ingroup PkgDiskSegmentationRef
+/// Number `n` of farthest-point seeds of the Voronoi segmentation.
+CGAL_DISK_SEGMENTATION_ADD_PARAMETER(number_of_seeds_t, number_of_seeds)
+/// \ingroup PkgDiskSegmentationRef
+/// Number `k` of seeds used to re-sample a region that is not a disk.
+CGAL_DISK_SEGMENTATION_ADD_PARAMETER(number_of_subsamples_t, number_of_subsamples)
+/// \ingroup PkgDiskSegmentationRef
+/// Score threshold `eps` of the greedy merging.
+CGAL_DISK_SEGMENTATION_ADD_PARAMETER(merge_threshold_t, merge_threshold)
+/// \ingroup PkgDiskSegmentationRef
+/// Face used as the first farthest-point seed.
+CGAL_DISK_SEGMENTATION_ADD_PARAMETER(first_seed_t, first_seed)
+/// \ingroup PkgDiskSegmentationRef
+/// Output iterator receiving the seed faces in the order they were chosen.
+CGAL_DISK_SEGMENTATION_ADD_PARAMETER(seeds_output_iterator_t, seeds_output_iterator)
+#undef CGAL_DISK_SEGMENTATION_ADD_PARAMETER
+
+} // namespace parameters
+
+} // namespace Disk_segmentation
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_DISK_SEGMENTATION_PARAMETERS_H

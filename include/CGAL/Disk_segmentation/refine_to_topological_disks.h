@@ -1,0 +1,186 @@
+// Copyright (c) 2026 The Disk_segmentation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_DISK_SEGMENTATION_REFINE_TO_TOPOLOGICAL_DISKS_H
+#define CGAL_DISK_SEGMENTATION_REFINE_TO_TOPOLOGICAL_DISKS_H
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Disk_segmentation/Input_error.h>
+#include <CGAL/Disk_segmentation/parameters.h>
+#include <CGAL/Disk_segmentation/internal/Face_partition.h>
+#include <CGAL/Disk_segmentation/internal/Indexed_triangle_mesh.h>
+#include <CGAL/Disk_segmentation/internal/Region_topology.h>
+#include <CGAL/Disk_segmentation/internal/Voronoi_fps.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <vector>
+
+namespace CGAL {
+namespace Disk_segmentation {
+namespace internal {
+
+inline std::size_t checked_number_of_subsamples(std::size_t k)
+{
+  if(k < 2)
+    throw Input_error("number_of_subsamples must be at least 2");
+  return k;
+}
+
+// The paper's Algorithm 1 on an indexed mesh. `regions` lists the faces of
+// each region in increasing order; on return `labels` numbers the refined
+// regions canonically and the count is returned.
+//
+// Termination: a region that is a disk is final. A region of at most k faces
+// is split into single faces, which are disks. A region R of more than k
+// faces is re-sampled with at least k >= 2 seeds, all distinct faces of R;
+// each seed keeps at least itself, so every sub-region has fewer faces than
+// R. Sizes strictly decrease along every chain of re-sampling, so the
+// worklist empties after at most |R| - 1 splits below each region.
+inline std::size_t refine_regions(const Indexed_triangle_mesh& m,
+                                  Voronoi_fps& fps,
+                                  std::vector<std::vector<Index> > regions,
+                                  std::size_t k,
+                                  std::vector<Index>& labels)
+{
+  Region_topology topology(m);
+  labels.assign(m.number_of_faces(), no_index);
+  Index next_label = 0;
+  auto finalize = [&](const std::vector<Index>& region)
+  {
+    for(Index f : region) labels[f] = next_label;
+    ++next_label;
+  };
+
+  std::vector<std::vector<Index> > worklist;
+  for(std::vector<Index>& region : regions)
+  {
+    if(topology.is_disk(region))
+      finalize(region);
+    else
+      worklist.push_back(std::move(region));
+  }
+
+  while(!worklist.empty())
+  {
+    std::vector<Index> region = std::move(worklist.back());
+    worklist.pop_back();
+    if(region.size() <= k)
+    {
+      for(Index f : region)
+        finalize(std::vector<Index>(1, f));
+      continue;
+    }
+
+    const std::vector<Index> seeds = fps.run(region, k);
+    CGAL_assertion(seeds.size() >= 2);
+    std::vector<std::vector<Index> > cells(seeds.size());
+    for(Index f : region)
+      cells[fps.cell(f)].push_back(f);  // stays sorted: region is
+    for(std::vector<Index>& cell : cells)
+    {
+      CGAL_assertion(!cell.empty() && cell.size() < region.size());
+      if(topology.is_disk(cell))
+        finalize(cell);
+      else
+        worklist.push_back(std::move(cell));
+    }
+  }
+  return make_canonical(labels);
+}
+
+} // namespace internal
+
+/// \ingroup PkgDiskSegmentationRef
+///
+/// Refines a face partition of `tm` until every region is a topological
+/// disk (the paper's Algorithm 1). A region that is already a disk is kept
+/// as it is. Any other region is re-sampled with `k` farthest-point seeds
+/// restricted to its faces and split into their Voronoi cells, recursively;
+/// a region of at most `k` faces is split into single faces.
+///
+/// A region is a topological disk when its faces are connected through
+/// edges, no vertex has its region faces in more than one fan (no pinched
+/// vertex), and its Euler characteristic `V - E + F` is 1.
+///
+/// The input regions are the sets of faces with equal values in
+/// `face_patch_map` (any values). On return, the ids are `0` to the returned
+/// value minus one, numbered in the order of each region's first face in
+/// `faces(tm)`.
+///
+/// @tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
+///         whose faces are triangles
+/// @tparam FacePatchMap a model of `ReadWritePropertyMap` with
+///         `face_descriptor` as key type and an integral value type
+/// @tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+///
+/// @param tm a triangle mesh, manifold, without garbage
+/// @param face_patch_map the partition to refine; receives the refined one
+/// @param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{number_of_subsamples}
+///     \cgalParamDescription{the number `k` of seeds used to re-sample a region that is not a disk}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{`5`}
+///     \cgalParamExtra{must be at least 2}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key type and the traits' `Point_3` as value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{an instance of a geometric traits class, used to read coordinates}
+///     \cgalParamType{a model of `Kernel`}
+///     \cgalParamDefault{a \cgal Kernel deduced from the point type}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_index_map}
+///     \cgalParamDescription{a property map associating to each face of `tm` a unique index in `[0, num_faces(tm))`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `face_descriptor` as key type and `std::size_t` as value type}
+///     \cgalParamDefault{an automatically indexed internal map}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in `[0, num_vertices(tm))`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key type and `std::size_t` as value type}
+///     \cgalParamDefault{an automatically indexed internal map}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// @return the number of regions after refinement
+///
+/// @throws Input_error as `voronoi_fps_segmentation()` does, or if `k < 2`.
+///
+/// Time: \f$ O(F) \f$ when every region is already a disk; a region of `m`
+/// faces re-sampled once costs \f$ O(m \log m \log k) \f$.
+template <typename TriangleMesh, typename FacePatchMap,
+          typename NamedParameters = parameters::Default_named_parameters>
+std::size_t refine_to_topological_disks(const TriangleMesh& tm,
+                                        FacePatchMap face_patch_map,
+                                        const NamedParameters& np = parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+
+  const std::size_t k = internal::checked_number_of_subsamples(
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_subsamples), std::size_t(5)));
+
+  internal::Indexed_triangle_mesh m;
+  std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> face_handles;
+  internal::build_indexed_triangle_mesh(tm, np, m, face_handles);
+
+  internal::Voronoi_fps fps(m);
+  std::vector<internal::Index> labels;
+  const std::size_t count = internal::refine_regions(
+    m, fps, internal::group_faces_by_label(internal::read_face_labels(face_handles, face_patch_map)), k, labels);
+  internal::write_face_labels(face_handles, labels, face_patch_map);
+  return count;
+}
+
+} // namespace Disk_segmentation
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_DISK_SEGMENTATION_REFINE_TO_TOPOLOGICAL_DISKS_H

@@ -1,0 +1,80 @@
+// Copyright (c) 2026 The Disk_segmentation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_DISK_SEGMENTATION_SEGMENT_INTO_DISKS_H
+#define CGAL_DISK_SEGMENTATION_SEGMENT_INTO_DISKS_H
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Disk_segmentation/merge_disk_regions.h>
+#include <CGAL/Disk_segmentation/refine_to_topological_disks.h>
+#include <CGAL/Disk_segmentation/voronoi_fps_segmentation.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <vector>
+
+namespace CGAL {
+namespace Disk_segmentation {
+
+/// \ingroup PkgDiskSegmentationRef
+///
+/// Segments `tm` into topological disks with the whole method of the paper:
+/// `voronoi_fps_segmentation()`, then `refine_to_topological_disks()`, then
+/// `merge_disk_regions()`. The mesh is read once, so this is faster than
+/// calling the three functions in turn, with the same result.
+///
+/// @tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
+///         whose faces are triangles
+/// @tparam FacePatchMap a model of `WritablePropertyMap` with
+///         `face_descriptor` as key type and an integral value type
+/// @tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+///
+/// @param tm a triangle mesh, manifold, without garbage
+/// @param face_patch_map receives the patch id of every face, in `[0, P)`
+///        where `P` is the returned value, numbered in the order of each
+///        patch's first face in `faces(tm)`
+/// @param np an optional sequence of \ref bgl_namedparameters "Named Parameters":
+///        all those of the three functions (`number_of_seeds`, `first_seed`,
+///        `random_seed`, `seeds_output_iterator`, `number_of_subsamples`,
+///        `merge_threshold`, `vertex_point_map`, `geom_traits`,
+///        `face_index_map`, `vertex_index_map`)
+///
+/// @return the number `P` of patches; every patch is a topological disk
+///
+/// @throws Input_error as the three functions do; `face_patch_map` is not
+///         written then.
+template <typename TriangleMesh, typename FacePatchMap,
+          typename NamedParameters = parameters::Default_named_parameters>
+std::size_t segment_into_disks(const TriangleMesh& tm,
+                               FacePatchMap face_patch_map,
+                               const NamedParameters& np = parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+
+  const std::size_t k = internal::checked_number_of_subsamples(
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_subsamples), std::size_t(5)));
+  const double threshold = internal::merge_threshold_parameter(np);
+
+  internal::Indexed_triangle_mesh m;
+  std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> face_handles;
+  internal::build_indexed_triangle_mesh(tm, np, m, face_handles);
+
+  internal::Voronoi_fps fps(m);
+  std::vector<internal::Index> labels;
+  const std::vector<internal::Index> seeds = internal::voronoi_fps_labels(m, face_handles, fps, np, labels);
+  const std::size_t refined = internal::refine_regions(m, fps, internal::group_faces_by_label(labels), k, labels);
+  const std::size_t count = internal::merge_regions(m, labels, refined, threshold);
+
+  internal::write_seeds(np, seeds, face_handles);
+  internal::write_face_labels(face_handles, labels, face_patch_map);
+  return count;
+}
+
+} // namespace Disk_segmentation
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_DISK_SEGMENTATION_SEGMENT_INTO_DISKS_H

@@ -1,0 +1,195 @@
+// Copyright (c) 2026 The Disk_segmentation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_DISK_SEGMENTATION_VORONOI_FPS_SEGMENTATION_H
+#define CGAL_DISK_SEGMENTATION_VORONOI_FPS_SEGMENTATION_H
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Disk_segmentation/Input_error.h>
+#include <CGAL/Disk_segmentation/parameters.h>
+#include <CGAL/Disk_segmentation/internal/Face_partition.h>
+#include <CGAL/Disk_segmentation/internal/Indexed_triangle_mesh.h>
+#include <CGAL/Disk_segmentation/internal/Voronoi_fps.h>
+
+#include <CGAL/Random.h>
+#include <CGAL/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <memory>
+#include <numeric>
+#include <vector>
+
+namespace CGAL {
+namespace Disk_segmentation {
+namespace internal {
+
+inline std::size_t checked_number_of_seeds(std::size_t n)
+{
+  if(n == 0)
+    throw Input_error("number_of_seeds must be at least 1");
+  return n;
+}
+
+// The Voronoi step on an indexed mesh: returns the seeds (face indices) and
+// writes into `labels` the position of each face's seed.
+template <typename NamedParameters, typename FaceHandles>
+std::vector<Index> voronoi_fps_labels(const Indexed_triangle_mesh& m,
+                                      const FaceHandles& face_handles,
+                                      Voronoi_fps& fps,
+                                      const NamedParameters& np,
+                                      std::vector<Index>& labels)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::is_default_parameter;
+
+  const std::size_t n = checked_number_of_seeds(
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_seeds), std::size_t(10)));
+
+  Index first = no_index;
+  if(!is_default_parameter<NamedParameters, Disk_segmentation::internal_np::first_seed_t>::value)
+  {
+    const auto f = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::first_seed),
+                                    face_handles.front());
+    const auto it = std::find(face_handles.begin(), face_handles.end(), f);
+    if(it == face_handles.end())
+      throw Input_error("first_seed is not a face of the mesh");
+    first = static_cast<Index>(it - face_handles.begin());
+  }
+
+  std::unique_ptr<CGAL::Random> rng;
+  if(!is_default_parameter<NamedParameters, CGAL::internal_np::random_seed_t>::value)
+    rng.reset(new CGAL::Random(choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u)));
+
+  std::vector<Index> all_faces(m.number_of_faces());
+  std::iota(all_faces.begin(), all_faces.end(), Index(0));
+  const std::vector<Index> seeds = fps.run(all_faces, n, first, rng.get());
+
+  labels.resize(m.number_of_faces());
+  for(Index f = 0; f < m.number_of_faces(); ++f)
+    labels[f] = fps.cell(f);
+  return seeds;
+}
+
+template <typename NamedParameters, typename FaceHandles>
+void write_seeds(const NamedParameters& np, const std::vector<Index>& seeds, const FaceHandles& face_handles)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  auto out = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::seeds_output_iterator),
+                              CGAL::Emptyset_iterator());
+  for(Index s : seeds)
+    *out++ = face_handles[s];
+}
+
+} // namespace internal
+
+/// \ingroup PkgDiskSegmentationRef
+///
+/// Partitions the faces of `tm` into the geodesic Voronoi cells of `n`
+/// farthest-point seeds, computed jointly on the dual graph (faces are the
+/// nodes; two faces sharing an edge are joined by an arc whose length is the
+/// path from one centroid through the edge midpoint to the other centroid).
+///
+/// Each new seed is the face farthest from all seeds chosen so far; only the
+/// faces that get closer to it are revisited, which costs
+/// \f$ O(F \log F \log n) \f$ expected time instead of `n` full Dijkstras.
+/// Every connected component receives at least one seed, so `max(n, number of
+/// components)` seeds are used, and at most `num_faces(tm)` (`n` is clamped).
+///
+/// Cells are edge-connected but need not be disks: see
+/// `refine_to_topological_disks()`.
+///
+/// @tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
+///         whose faces are triangles
+/// @tparam FacePatchMap a model of `WritablePropertyMap` with
+///         `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and
+///         an integral value type (`std::size_t` recommended)
+/// @tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+///
+/// @param tm a triangle mesh, manifold, without garbage
+/// @param face_patch_map receives for every face the id of its cell; cell `i`
+///        is the cell of the `i`-th seed (ids are `0` to the returned value minus one)
+/// @param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{number_of_seeds}
+///     \cgalParamDescription{the number `n` of seeds}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{`10`}
+///     \cgalParamExtra{must be at least 1}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{first_seed}
+///     \cgalParamDescription{the first seed of its connected component}
+///     \cgalParamType{`boost::graph_traits<TriangleMesh>::%face_descriptor`}
+///     \cgalParamDefault{in every component, the face farthest from the component's first face}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{random_seed}
+///     \cgalParamDescription{when given, the first seed of every component (but the one of `first_seed`) is drawn at random with this seed}
+///     \cgalParamType{`unsigned int`}
+///     \cgalParamDefault{no randomness}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{seeds_output_iterator}
+///     \cgalParamDescription{receives the seed faces, in the order they were chosen}
+///     \cgalParamType{a model of `OutputIterator` accepting `face_descriptor`}
+///     \cgalParamDefault{unused}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key type and the traits' `Point_3` as value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{an instance of a geometric traits class, used to read coordinates}
+///     \cgalParamType{a model of `Kernel`}
+///     \cgalParamDefault{a \cgal Kernel deduced from the point type}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_index_map}
+///     \cgalParamDescription{a property map associating to each face of `tm` a unique index in `[0, num_faces(tm))`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `face_descriptor` as key type and `std::size_t` as value type}
+///     \cgalParamDefault{an automatically indexed internal map}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in `[0, num_vertices(tm))`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key type and `std::size_t` as value type}
+///     \cgalParamDefault{an automatically indexed internal map}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// @return the number of cells
+///
+/// @throws Input_error if `tm` has no face, a face that is not a triangle, a
+///         non-manifold vertex or a non-finite coordinate, or if a parameter
+///         is out of range. `face_patch_map` is not written then.
+///
+/// The result depends only on the mesh (faces and vertices in the order of
+/// `faces(tm)` and `vertices(tm)`) and the parameters: it is the same for
+/// `Surface_mesh` and `Polyhedron_3` holding the same mesh.
+template <typename TriangleMesh, typename FacePatchMap,
+          typename NamedParameters = parameters::Default_named_parameters>
+std::size_t voronoi_fps_segmentation(const TriangleMesh& tm,
+                                     FacePatchMap face_patch_map,
+                                     const NamedParameters& np = parameters::default_values())
+{
+  internal::Indexed_triangle_mesh m;
+  std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> face_handles;
+  internal::build_indexed_triangle_mesh(tm, np, m, face_handles);
+
+  internal::Voronoi_fps fps(m);
+  std::vector<internal::Index> labels;
+  const std::vector<internal::Index> seeds = internal::voronoi_fps_labels(m, face_handles, fps, np, labels);
+
+  internal::write_seeds(np, seeds, face_handles);
+  internal::write_face_labels(face_handles, labels, face_patch_map);
+  return seeds.size();
+}
+
+} // namespace Disk_segmentation
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_DISK_SEGMENTATION_VORONOI_FPS_SEGMENTATION_H

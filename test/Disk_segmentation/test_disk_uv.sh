@@ -1,0 +1,88 @@
+#!/usr/bin/env bash
+# End-to-end test of the disk_uv command-line tool: a good run writes its
+# outputs; each bad input or parameter gives exit status 1 (2 for usage
+# errors), one line on stderr naming the problem, and no output file.
+# usage: test_disk_uv.sh PATH/TO/disk_uv DATA_DIR
+set -u
+tool=$1
+data=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+passed=0
+
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+pass() { passed=$((passed + 1)); }
+
+# --- a good run
+if "$tool" "$data/elephant.off" -n 12 --patch-ids "$work/ids.txt" --colored "$work/patches.ply" > "$work/out.txt" 2> "$work/err.txt"; then
+  pass
+else
+  fail "good run exited non-zero: $(cat "$work/err.txt")"
+fi
+faces=$(sed -n 2p "$data/elephant.off" | awk '{print $2}')
+[ "$(wc -l < "$work/ids.txt")" -eq "$faces" ] && pass || fail "patch-id file has not one line per face"
+patches=$(sed -E 's/.*-> ([0-9]+) patches.*/\1/' "$work/out.txt")
+distinct=$(sort -n "$work/ids.txt" | uniq | wc -l)
+[ "$distinct" -eq "$patches" ] && pass || fail "summary says $patches patches, file has $distinct ids"
+[ "$(sort -n "$work/ids.txt" | tail -1)" -eq $((patches - 1)) ] && pass || fail "ids are not 0..P-1"
+grep -q "^element face $faces$" "$work/patches.ply" && pass || fail "colored PLY lacks the faces"
+[ "$(grep -c '^3 ' "$work/patches.ply")" -eq "$faces" ] && pass || fail "colored PLY has not one colored triangle per face"
+ls "$work" | grep -q tmp && fail "a temporary file was left behind" || pass
+
+# --- same input, same output
+"$tool" "$data/elephant.off" -n 12 --patch-ids "$work/ids2.txt" > /dev/null 2>&1
+cmp -s "$work/ids.txt" "$work/ids2.txt" && pass || fail "two runs differ"
+
+# --- each error: status, one-line message naming the problem, no output written
+expect_error() { # expected_status expected_message_part args...
+  local status=$1 message=$2
+  shift 2
+  rm -f "$work/never.txt"
+  "$tool" "$@" --patch-ids "$work/never.txt" > "$work/out.txt" 2> "$work/err.txt"
+  local got=$?
+  if [ "$got" -ne "$status" ]; then fail "'$*' exited $got, expected $status"; return; fi
+  if ! grep -qiE -- "$message" "$work/err.txt"; then fail "'$*' said '$(cat "$work/err.txt")', expected '$message'"; return; fi
+  if [ "$status" -eq 1 ] && [ "$(wc -l < "$work/err.txt")" -ne 1 ]; then fail "'$*' printed more than one line"; return; fi
+  if [ -e "$work/never.txt" ]; then fail "'$*' wrote an output"; return; fi
+  pass
+}
+
+printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n' > "$work/truncated.off"
+: > "$work/empty.off"
+printf 'OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n' > "$work/quad.off"
+printf 'OFF\n3 1 0\n0 0 0\nnan 0 0\n1 1 0\n3 0 1 2\n' > "$work/nan.off"
+printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n1 1 0\n3 0 1 7\n' > "$work/badindex.off"
+# Three triangles on one edge.
+printf 'OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n' > "$work/nonmanifold_edge.off"
+# Two triangles sharing only a vertex.
+printf 'OFF\n5 2 0\n0 0 0\n1 0 0\n1 1 0\n-1 0 0\n-1 -1 0\n3 0 1 2\n3 0 3 4\n' > "$work/pinched.off"
+# Two triangles with opposite orientations across their common edge.
+printf 'OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 1 2 3\n' > "$work/flipped.off"
+cp "$data/elephant.off" "$work/mesh.txt"
+
+expect_error 1 "cannot open" "$work/does_not_exist.off"
+expect_error 1 "not a valid" "$work/empty.off"
+expect_error 1 "not a valid" "$work/truncated.off"
+expect_error 1 "unknown mesh format" "$work/mesh.txt"
+expect_error 1 "4 vertices" "$work/quad.off"
+expect_error 1 "refers to vertex|not a valid" "$work/badindex.off"
+expect_error 1 "not manifold" "$work/nonmanifold_edge.off"
+expect_error 1 "not manifold" "$work/pinched.off"
+expect_error 1 "oriented inconsistently" "$work/flipped.off"
+expect_error 1 "number_of_seeds" "$data/elephant.off" -n 0
+expect_error 1 "number_of_subsamples" "$data/elephant.off" -k 1
+expect_error 1 "merge_threshold" "$data/elephant.off" --threshold -1
+expect_error 2 "" "$data/elephant.off" -n abc
+expect_error 2 "" "$data/elephant.off" --no-such-option
+# NaN: the reader may refuse the number or the checker names it; either way a clear error.
+"$tool" "$work/nan.off" > /dev/null 2> "$work/err.txt"
+[ $? -eq 1 ] && grep -qiE "non-finite|not a valid" "$work/err.txt" && pass || fail "NaN input: $(cat "$work/err.txt")"
+
+# --- the input is never overwritten
+cp "$data/elephant.off" "$work/keep.off"
+"$tool" "$work/keep.off" --colored "$work/keep.off" > /dev/null 2> "$work/err.txt"
+[ $? -eq 1 ] && cmp -s "$data/elephant.off" "$work/keep.off" && pass || fail "input file was overwritten"
+
+echo "disk_uv: $passed passed, $failures failed"
+[ "$failures" -eq 0 ]
