@@ -7,7 +7,7 @@ packages=(
   g++ cmake make
   libcgal-dev libeigen3-dev libboost-dev libtbb-dev libgmp-dev libmpfr-dev
   libgtest-dev libbenchmark-dev
-  libcli11-dev
+  libcli11-dev nlohmann-json3-dev libtinygltf-dev libstb-dev pkg-config
 )
 
 missing=()

@@ -3,8 +3,9 @@
 # mesh into topological disks.
 #   scripts/main_job.sh [MESH [OUTPUT_DIR]]
 # Defaults: test/Disk_segmentation/data/elephant.off, output in out/.
-# Writes OUTPUT_DIR/NAME_patches.ply (one color per patch: open it in any
-# mesh viewer), NAME_patch_ids.txt (one id per face) and NAME_summary.txt.
+# Writes into OUTPUT_DIR: NAME_atlas.obj, NAME_atlas.glb, NAME_atlas.png,
+# NAME_report.json, NAME_patches.ply (one color per chart), NAME_patch_ids.txt
+# and NAME_summary.txt.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${BUILD_DIR:-$root/build}
@@ -14,6 +15,8 @@ bash "$root/scripts/build.sh" -DDISK_SEGMENTATION_BUILD_EXAMPLES=ON > "$build.bu
   || { tail -n 30 "$build.build.log"; exit 1; }
 mkdir -p "$out"
 name=$(basename "${mesh%.*}")
-"$build/bin/disk_uv" "$mesh" --patch-ids "$out/${name}_patch_ids.txt" --colored "$out/${name}_patches.ply" \
+"$build/bin/disk_uv" "$mesh" -o "$out/${name}_atlas.obj" --glb "$out/${name}_atlas.glb" \
+  --atlas-png "$out/${name}_atlas.png" --report "$out/${name}_report.json" \
+  --patch-ids "$out/${name}_patch_ids.txt" --colored "$out/${name}_patches.ply" \
   | tee "$out/${name}_summary.txt"
-echo "Results in $out: ${name}_patches.ply, ${name}_patch_ids.txt, ${name}_summary.txt"
+echo "Results in $out: ${name}_atlas.{obj,glb,png}, ${name}_report.json, ${name}_patches.ply, ${name}_patch_ids.txt"

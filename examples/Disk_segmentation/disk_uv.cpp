@@ -1,14 +1,20 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// disk_uv: segments a triangle mesh into topological disks.
+// disk_uv: UV atlas of a triangle mesh through a segmentation into
+// topological disks (Maggioli & Melzi, EG 2025).
 //
-//   disk_uv INPUT [-n 10] [-k 5] [--threshold 0.7624]
-//           [--patch-ids FILE] [--colored FILE.ply]
+//   disk_uv INPUT [-o OUT.obj] [--glb OUT.glb] [--atlas-png OUT.png]
+//           [--report OUT.json] [--patch-ids FILE] [--colored FILE.ply]
+//           [--method arap|conformal|lscm|mvc|tutte] [--packer tight|grid]
+//           [--resolution 1024] [--padding 2] [-n 10] [-k 5]
+//           [--threshold 0.7624] [--threads 0] [--no-fallback] [--quiet]
 //
 // Prints a one-line summary; on any error prints one line on stderr and
-// exits with status 1 (2 for bad command-line usage).
+// exits with status 1 (2 for bad command-line usage). Outputs are written
+// to a temporary file renamed at the end, never half-written.
 
+#include "atlas_writers.h"
 #include "mesh_io.h"
 
 #include <CGAL/Disk_segmentation.h>
@@ -17,41 +23,23 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <string>
+#include <unistd.h>
 
 namespace DS = CGAL::Disk_segmentation;
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
 typedef Mesh::Property_map<Mesh::Face_index, std::size_t> Patch_map;
+typedef Mesh::Property_map<Mesh::Halfedge_index, Kernel::Point_2> UV_map;
 
 namespace {
-
-// Well-separated colors: hues spaced by the golden angle.
-std::array<int, 3> patch_color(std::size_t patch)
-{
-  const double hue = std::fmod(patch * 0.618033988749895, 1.0) * 6.0;
-  const double saturation = (patch % 3 == 0) ? 0.55 : 0.75, value = (patch % 2 == 0) ? 0.95 : 0.8;
-  const int sector = static_cast<int>(hue);
-  const double f = hue - sector;
-  const double p = value * (1 - saturation), q = value * (1 - saturation * f), t = value * (1 - saturation * (1 - f));
-  double r = value, g = t, b = p;
-  switch(sector)
-  {
-    case 1: r = q; g = value; b = p; break;
-    case 2: r = p; g = value; b = t; break;
-    case 3: r = p; g = q; b = value; break;
-    case 4: r = t; g = p; b = value; break;
-    case 5: r = value; g = p; b = q; break;
-    default: break;
-  }
-  return {{ int(r * 255 + 0.5), int(g * 255 + 0.5), int(b * 255 + 0.5) }};
-}
 
 void write_colored_ply(std::ostream& out, const Mesh& mesh, const Patch_map& patch)
 {
@@ -67,8 +55,8 @@ void write_colored_ply(std::ostream& out, const Mesh& mesh, const Patch_map& pat
     out << 3;
     for(Mesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
       out << ' ' << std::size_t(v);
-    const std::array<int, 3> c = patch_color(patch[f]);
-    out << ' ' << c[0] << ' ' << c[1] << ' ' << c[2] << '\n';
+    const std::array<unsigned char, 3> c = disk_uv::chart_color(patch[f]);
+    out << ' ' << int(c[0]) << ' ' << int(c[1]) << ' ' << int(c[2]) << '\n';
   }
 }
 
@@ -78,21 +66,96 @@ void write_patch_ids(std::ostream& out, const Mesh& mesh, const Patch_map& patch
     out << patch[f] << '\n';
 }
 
+nlohmann::json report_json(const std::string& input, const Mesh& mesh, const DS::Atlas_report& r,
+                           const std::string& method, const std::string& packer, double read_seconds)
+{
+  nlohmann::json charts = nlohmann::json::array();
+  for(const DS::Chart_report& c : r.parameterization.charts)
+    charts.push_back({ { "patch", c.patch }, { "faces", c.faces }, { "requested", DS::to_string(c.requested) },
+                       { "used", DS::to_string(c.used) }, { "fallback", c.fallback }, { "split", c.split },
+                       { "valid", c.valid }, { "problem", c.problem },
+                       { "angle_distortion", c.angle_distortion }, { "area_distortion", c.area_distortion } });
+  return {
+    { "input", input },
+    { "faces", r.number_of_faces },
+    { "vertices", mesh.number_of_vertices() },
+    { "method", method },
+    { "packer", packer },
+    { "segmentation", { { "voronoi_cells", r.number_of_voronoi_cells },
+                        { "refined_regions", r.number_of_refined_regions },
+                        { "charts", r.number_of_charts } } },
+    { "parameterization", { { "fallbacks", r.parameterization.number_of_fallbacks },
+                            { "split_patches", r.parameterization.number_of_split_patches },
+                            { "invalid_charts", r.parameterization.number_of_invalid_charts } } },
+    { "packing", { { "efficiency", r.packing.efficiency }, { "texels_per_unit", r.packing.texels_per_unit } } },
+    { "seconds", { { "read", read_seconds }, { "voronoi", r.voronoi_seconds }, { "refine", r.refine_seconds },
+                   { "merge", r.merge_seconds }, { "parameterization", r.parameterization_seconds },
+                   { "packing", r.packing_seconds }, { "total", r.total_seconds } } },
+    { "charts", charts } };
+}
+
+// Progress on stderr, once the run has lasted a second, and only on a
+// terminal-like stream: a line rewritten in place.
+class Progress_display
+{
+public:
+  explicit Progress_display(bool enabled) : enabled_(enabled) { timer_.start(); }
+  void operator()(const std::string& stage, std::size_t done, std::size_t total)
+  {
+    if(!enabled_ || timer_.time() < 1.0)
+      return;
+    if(stage == last_stage_ && done != total && timer_.time() - last_print_ < 0.2)
+      return;
+    std::fprintf(stderr, "\r%-18s %zu/%zu   ", stage.c_str(), done, total);
+    std::fflush(stderr);
+    printed_ = true;
+    last_stage_ = stage;
+    last_print_ = timer_.time();
+  }
+  void finish()
+  {
+    if(printed_)
+      std::fprintf(stderr, "\r%40s\r", "");
+  }
+
+private:
+  bool enabled_;
+  bool printed_ = false;
+  CGAL::Real_timer timer_;
+  std::string last_stage_;
+  double last_print_ = 0;
+};
+
 } // namespace
 
 int main(int argc, char** argv)
 {
-  CLI::App app{"disk_uv: segments a triangle mesh into topological disks "
-               "(Maggioli & Melzi, EG 2025)"};
-  std::string input, patch_ids_path, colored_path;
+  CLI::App app{"disk_uv: UV atlas of a triangle mesh through a segmentation into topological disks"};
+  std::string input, obj_path, glb_path, png_path, report_path, patch_ids_path, colored_path;
+  std::string method_name = DS::to_string(DS::default_parameterization_method), packer_name = "tight";
   std::size_t n = 10, k = 5;
-  double threshold = DS::regular_polygon_threshold(5);
+  double threshold = DS::regular_polygon_threshold(5), padding = 2;
+  unsigned int resolution = 1024, threads = 0;
+  bool no_fallback = false, quiet = false;
   app.add_option("INPUT", input, "input triangle mesh (.off .obj .ply .stl .ts)")->required();
+  app.add_option("-o,--obj", obj_path, "write the atlas as OBJ (per-corner vt, one group per chart)");
+  app.add_option("--glb", glb_path, "write the atlas as binary glTF 2.0 (TEXCOORD_0)");
+  app.add_option("--atlas-png", png_path, "draw the atlas layout (flipped triangles in red)");
+  app.add_option("--report", report_path, "write all statistics as JSON");
+  app.add_option("--patch-ids", patch_ids_path, "write one chart id per face, in input face order");
+  app.add_option("--colored", colored_path, "write a PLY mesh with one color per chart");
+  app.add_option("--method", method_name, "parameterization: arap, conformal, lscm, mvc or tutte")
+    ->capture_default_str();
+  app.add_option("--packer", packer_name, "packing: tight (one texel density) or grid (the paper's)")
+    ->capture_default_str();
+  app.add_option("--resolution", resolution, "target texture side in texels")->capture_default_str();
+  app.add_option("--padding", padding, "gap around charts in texels")->capture_default_str();
   app.add_option("-n,--seeds", n, "number of farthest-point seeds")->capture_default_str();
   app.add_option("-k,--subsamples", k, "seeds used to re-sample a region that is not a disk")->capture_default_str();
   app.add_option("--threshold", threshold, "merge score threshold (eps_5 = 0.7624 by default)")->capture_default_str();
-  app.add_option("--patch-ids", patch_ids_path, "write one patch id per face, in input face order");
-  app.add_option("--colored", colored_path, "write a PLY mesh with one color per patch");
+  app.add_option("--threads", threads, "maximum number of threads (0: all)")->capture_default_str();
+  app.add_flag("--no-fallback", no_fallback, "keep invalid charts (and report them) instead of redoing them");
+  app.add_flag("-q,--quiet", quiet, "no progress display and no summary");
   try
   {
     app.parse(argc, argv);
@@ -102,41 +165,73 @@ int main(int argc, char** argv)
     return app.exit(e) == 0 ? 0 : 2;
   }
 
+  Progress_display display(!quiet && ::isatty(2));
   try
   {
-    for(const std::string& out : { patch_ids_path, colored_path })
+    for(const std::string& out : { obj_path, glb_path, png_path, report_path, patch_ids_path, colored_path })
       if(!out.empty() && out == input)
         throw disk_uv::Tool_error("refusing to overwrite the input file '" + input + "'");
+    const DS::Parameterization_method method = DS::parameterization_method_from_string(method_name);
+    DS::Packing_method packer;
+    if(packer_name == "tight") packer = DS::Packing_method::TIGHT;
+    else if(packer_name == "grid") packer = DS::Packing_method::GRID;
+    else throw disk_uv::Tool_error("unknown packer '" + packer_name + "' (expected tight or grid)");
 
     CGAL::Real_timer timer;
     timer.start();
     Mesh mesh;
     disk_uv::read_triangle_mesh(input, mesh);
-    const double read_time = timer.time();
+    const double read_seconds = timer.time();
     Patch_map patch = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:patch", 0).first;
+    UV_map uv = mesh.add_property_map<Mesh::Halfedge_index, Kernel::Point_2>("h:uv", Kernel::Point_2(0, 0)).first;
 
-    timer.reset();
-    const std::size_t seeds = DS::voronoi_fps_segmentation(mesh, patch, DS::parameters::number_of_seeds(n));
-    const double voronoi_time = timer.time();
-    timer.reset();
-    const std::size_t refined = DS::refine_to_topological_disks(mesh, patch, DS::parameters::number_of_subsamples(k));
-    const double refine_time = timer.time();
-    timer.reset();
-    const std::size_t patches = DS::merge_disk_regions(mesh, patch, DS::parameters::merge_threshold(threshold));
-    const double merge_time = timer.time();
+    const DS::Atlas_report report = DS::uv_atlas(
+      mesh, uv,
+      DS::parameters::number_of_seeds(n).number_of_subsamples(k).merge_threshold(threshold)
+        .parameterization_method(method).use_fallback(!no_fallback).packing_method(packer)
+        .texture_resolution(resolution).padding_in_texels(padding).number_of_threads(threads)
+        .face_patch_map(patch)
+        .progress_callback(std::function<void(const std::string&, std::size_t, std::size_t)>(
+          [&display](const std::string& s, std::size_t d, std::size_t t) { display(s, d, t); })));
+    display.finish();
 
+    if(!obj_path.empty())
+      disk_uv::write_file_atomically(obj_path, [&](std::ostream& o) { disk_uv::write_obj(o, mesh, patch, uv); });
+    if(!glb_path.empty())
+      disk_uv::write_file_atomically(glb_path, [&](std::ostream& o) { disk_uv::write_glb(o, mesh, patch, uv); });
+    if(!png_path.empty())
+      disk_uv::write_file_atomically(png_path, [&](std::ostream& o) {
+        disk_uv::write_atlas_png(o, mesh, patch, uv, resolution);
+      });
     if(!patch_ids_path.empty())
-      disk_uv::write_file_atomically(patch_ids_path, [&](std::ostream& out) { write_patch_ids(out, mesh, patch); });
+      disk_uv::write_file_atomically(patch_ids_path, [&](std::ostream& o) { write_patch_ids(o, mesh, patch); });
     if(!colored_path.empty())
-      disk_uv::write_file_atomically(colored_path, [&](std::ostream& out) { write_colored_ply(out, mesh, patch); });
+      disk_uv::write_file_atomically(colored_path, [&](std::ostream& o) { write_colored_ply(o, mesh, patch); });
+    if(!report_path.empty())
+      disk_uv::write_file_atomically(report_path, [&](std::ostream& o) {
+        o << report_json(input, mesh, report, method_name, packer_name, read_seconds).dump(2) << '\n';
+      });
 
-    std::printf("%s: %zu faces -> %zu patches (voronoi %zu, refined %zu); "
-                "time read %.3f s, voronoi %.3f s, refine %.3f s, merge %.3f s\n",
-                input.c_str(), static_cast<std::size_t>(mesh.number_of_faces()), patches, seeds, refined,
-                read_time, voronoi_time, refine_time, merge_time);
+    if(!quiet)
+      std::printf("%s: %zu faces -> %zu charts (voronoi %zu, refined %zu), %s, %zu fallbacks, %zu invalid, "
+                  "packing %.1f%%; time read %.3f s, segment %.3f s, parameterize %.3f s, pack %.3f s\n",
+                  input.c_str(), report.number_of_faces, report.number_of_charts, report.number_of_voronoi_cells,
+                  report.number_of_refined_regions, method_name.c_str(),
+                  report.parameterization.number_of_fallbacks, report.parameterization.number_of_invalid_charts,
+                  100 * report.packing.efficiency, read_seconds,
+                  report.voronoi_seconds + report.refine_seconds + report.merge_seconds,
+                  report.parameterization_seconds, report.packing_seconds);
+    // With the fallback off, invalid charts are a failure the caller must see.
+    if(report.parameterization.number_of_invalid_charts > 0)
+    {
+      std::cerr << "disk_uv: error: " << report.parameterization.number_of_invalid_charts
+                << " charts have invalid UVs (run without --no-fallback to repair them)" << std::endl;
+      return 1;
+    }
   }
   catch(const std::exception& e)
   {
+    display.finish();
     std::cerr << "disk_uv: error: " << e.what() << std::endl;
     return 1;
   }

@@ -17,7 +17,6 @@
 #include <cstdio>
 #include <fstream>
 #include <functional>
-#include <map>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -69,22 +68,30 @@ std::string triangle_soup_problem(const std::vector<Point>& points,
        !std::isfinite(CGAL::to_double(points[v].z())))
       return "vertex #" + std::to_string(v) + " has a non-finite (NaN or infinite) coordinate";
 
-  // Undirected edge -> (faces using it a -> b, faces using it b -> a).
-  std::map<std::pair<std::size_t, std::size_t>, std::array<std::size_t, 2> > edges;
+  // Every directed edge as (smaller vertex, larger vertex, direction),
+  // sorted so that the uses of one undirected edge are adjacent.
+  std::vector<std::array<std::size_t, 3> > uses;
+  uses.reserve(3 * polygons.size());
   for(const auto& p : polygons)
     for(int i = 0; i < 3; ++i)
     {
       const std::size_t a = p[i], b = p[(i + 1) % 3];
-      ++edges[std::make_pair((std::min)(a, b), (std::max)(a, b))][a < b ? 0 : 1];
+      uses.push_back({{ (std::min)(a, b), (std::max)(a, b), std::size_t(a < b ? 0 : 1) }});
     }
-  for(const auto& e : edges)
+  std::sort(uses.begin(), uses.end());
+  for(std::size_t i = 0; i < uses.size();)
   {
-    const std::size_t uses = e.second[0] + e.second[1];
-    const std::string name = "edge (" + std::to_string(e.first.first) + ", " + std::to_string(e.first.second) + ")";
-    if(uses > 2)
-      return "the mesh is not manifold: " + name + " is shared by " + std::to_string(uses) + " faces";
-    if(e.second[0] > 1 || e.second[1] > 1)
-      return "the faces on both sides of " + name + " are oriented inconsistently";
+    std::size_t j = i;
+    std::array<std::size_t, 2> per_direction{{ 0, 0 }};
+    while(j < uses.size() && uses[j][0] == uses[i][0] && uses[j][1] == uses[i][1])
+      ++per_direction[uses[j++][2]];
+    const std::size_t count = j - i;
+    auto name = [&] { return "edge (" + std::to_string(uses[i][0]) + ", " + std::to_string(uses[i][1]) + ")"; };
+    if(count > 2)
+      return "the mesh is not manifold: " + name() + " is shared by " + std::to_string(count) + " faces";
+    if(per_direction[0] > 1 || per_direction[1] > 1)
+      return "the faces on both sides of " + name() + " are oriented inconsistently";
+    i = j;
   }
   if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons))
     return "the mesh is not manifold: the faces around some vertex form more than one fan";

@@ -13,5 +13,9 @@
 #include <CGAL/Disk_segmentation/refine_to_topological_disks.h>
 #include <CGAL/Disk_segmentation/merge_disk_regions.h>
 #include <CGAL/Disk_segmentation/segment_into_disks.h>
+#include <CGAL/Disk_segmentation/Parameterization_method.h>
+#include <CGAL/Disk_segmentation/parameterize_patches.h>
+#include <CGAL/Disk_segmentation/pack_patches.h>
+#include <CGAL/Disk_segmentation/uv_atlas.h>
 
 #endif // CGAL_DISK_SEGMENTATION_H

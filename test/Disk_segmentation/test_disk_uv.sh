@@ -15,20 +15,28 @@ fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 pass() { passed=$((passed + 1)); }
 
 # --- a good run
-if "$tool" "$data/elephant.off" -n 12 --patch-ids "$work/ids.txt" --colored "$work/patches.ply" > "$work/out.txt" 2> "$work/err.txt"; then
+if "$tool" "$data/elephant.off" -n 12 --patch-ids "$work/ids.txt" --colored "$work/patches.ply" \
+     -o "$work/atlas.obj" --glb "$work/atlas.glb" --atlas-png "$work/atlas.png" --report "$work/report.json" \
+     > "$work/out.txt" 2> "$work/err.txt"; then
   pass
 else
   fail "good run exited non-zero: $(cat "$work/err.txt")"
 fi
 faces=$(sed -n 2p "$data/elephant.off" | awk '{print $2}')
 [ "$(wc -l < "$work/ids.txt")" -eq "$faces" ] && pass || fail "patch-id file has not one line per face"
-patches=$(sed -E 's/.*-> ([0-9]+) patches.*/\1/' "$work/out.txt")
+patches=$(sed -E 's/.*-> ([0-9]+) charts.*/\1/' "$work/out.txt")
 distinct=$(sort -n "$work/ids.txt" | uniq | wc -l)
 [ "$distinct" -eq "$patches" ] && pass || fail "summary says $patches patches, file has $distinct ids"
 [ "$(sort -n "$work/ids.txt" | tail -1)" -eq $((patches - 1)) ] && pass || fail "ids are not 0..P-1"
 grep -q "^element face $faces$" "$work/patches.ply" && pass || fail "colored PLY lacks the faces"
 [ "$(grep -c '^3 ' "$work/patches.ply")" -eq "$faces" ] && pass || fail "colored PLY has not one colored triangle per face"
 ls "$work" | grep -q tmp && fail "a temporary file was left behind" || pass
+[ "$(grep -c '^f ' "$work/atlas.obj")" -eq "$faces" ] && pass || fail "OBJ has not one face per input face"
+[ "$(grep -c '^g chart_' "$work/atlas.obj")" -ge "$patches" ] && pass || fail "OBJ has fewer groups than charts"
+[ "$(head -c 4 "$work/atlas.glb")" = "glTF" ] && pass || fail "GLB lacks the glTF magic"
+[ "$(head -c 4 "$work/atlas.png" | tail -c 3)" = "PNG" ] && pass || fail "PNG lacks its signature"
+grep -q '"charts"' "$work/report.json" && grep -q '"efficiency"' "$work/report.json" && pass || fail "JSON report lacks fields"
+grep -q '"invalid_charts": 0' "$work/report.json" && pass || fail "report says some chart is invalid"
 
 # --- same input, same output
 "$tool" "$data/elephant.off" -n 12 --patch-ids "$work/ids2.txt" > /dev/null 2>&1
@@ -73,6 +81,10 @@ expect_error 1 "oriented inconsistently" "$work/flipped.off"
 expect_error 1 "number_of_seeds" "$data/elephant.off" -n 0
 expect_error 1 "number_of_subsamples" "$data/elephant.off" -k 1
 expect_error 1 "merge_threshold" "$data/elephant.off" --threshold -1
+expect_error 1 "unknown parameterization method" "$data/elephant.off" --method harmonic2
+expect_error 1 "unknown packer" "$data/elephant.off" --packer best
+expect_error 1 "texture_resolution" "$data/elephant.off" --resolution 0
+expect_error 1 "padding" "$data/elephant.off" --padding -3
 expect_error 2 "" "$data/elephant.off" -n abc
 expect_error 2 "" "$data/elephant.off" --no-such-option
 # NaN: the reader may refuse the number or the checker names it; either way a clear error.

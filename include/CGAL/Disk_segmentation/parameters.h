@@ -29,6 +29,13 @@ enum number_of_subsamples_t { number_of_subsamples };
 enum merge_threshold_t { merge_threshold };
 enum first_seed_t { first_seed };
 enum seeds_output_iterator_t { seeds_output_iterator };
+enum parameterization_method_t { parameterization_method };
+enum use_fallback_t { use_fallback };
+enum packing_method_t { packing_method };
+enum texture_resolution_t { texture_resolution };
+enum padding_in_texels_t { padding_in_texels };
+enum number_of_threads_t { number_of_threads };
+enum progress_callback_t { progress_callback };
 
 } // namespace internal_np
 
@@ -70,6 +77,13 @@ struct Named_function_parameters
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(merge_threshold_t, merge_threshold)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(first_seed_t, first_seed)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(seeds_output_iterator_t, seeds_output_iterator)
+  CGAL_DISK_SEGMENTATION_ADD_PARAMETER(parameterization_method_t, parameterization_method)
+  CGAL_DISK_SEGMENTATION_ADD_PARAMETER(use_fallback_t, use_fallback)
+  CGAL_DISK_SEGMENTATION_ADD_PARAMETER(packing_method_t, packing_method)
+  CGAL_DISK_SEGMENTATION_ADD_PARAMETER(texture_resolution_t, texture_resolution)
+  CGAL_DISK_SEGMENTATION_ADD_PARAMETER(padding_in_texels_t, padding_in_texels)
+  CGAL_DISK_SEGMENTATION_ADD_PARAMETER(number_of_threads_t, number_of_threads)
+  CGAL_DISK_SEGMENTATION_ADD_PARAMETER(progress_callback_t, progress_callback)
 #undef CGAL_DISK_SEGMENTATION_ADD_PARAMETER
 };
 
@@ -115,6 +129,29 @@ CGAL_DISK_SEGMENTATION_ADD_PARAMETER(first_seed_t, first_seed)
 /// \ingroup PkgDiskSegmentationRef
 /// Output iterator receiving the seed faces in the order they were chosen.
 CGAL_DISK_SEGMENTATION_ADD_PARAMETER(seeds_output_iterator_t, seeds_output_iterator)
+/// \ingroup PkgDiskSegmentationRef
+/// Parameterization method of every chart (`Parameterization_method`).
+CGAL_DISK_SEGMENTATION_ADD_PARAMETER(parameterization_method_t, parameterization_method)
+/// \ingroup PkgDiskSegmentationRef
+/// Whether an invalid chart is redone with an injective method (`bool`).
+CGAL_DISK_SEGMENTATION_ADD_PARAMETER(use_fallback_t, use_fallback)
+/// \ingroup PkgDiskSegmentationRef
+/// How charts are placed in the unit square (`Packing_method`).
+CGAL_DISK_SEGMENTATION_ADD_PARAMETER(packing_method_t, packing_method)
+/// \ingroup PkgDiskSegmentationRef
+/// Side of the target texture in texels (`unsigned int`).
+CGAL_DISK_SEGMENTATION_ADD_PARAMETER(texture_resolution_t, texture_resolution)
+/// \ingroup PkgDiskSegmentationRef
+/// Gap kept around every chart, in texels of the target texture (`double`).
+CGAL_DISK_SEGMENTATION_ADD_PARAMETER(padding_in_texels_t, padding_in_texels)
+/// \ingroup PkgDiskSegmentationRef
+/// Maximum number of threads; 0 lets TBB decide (`unsigned int`).
+CGAL_DISK_SEGMENTATION_ADD_PARAMETER(number_of_threads_t, number_of_threads)
+/// \ingroup PkgDiskSegmentationRef
+/// Called as `callback(stage, done, total)` while an atlas is computed
+/// (`std::function<void(const std::string&, std::size_t, std::size_t)>`);
+/// calls are serialized.
+CGAL_DISK_SEGMENTATION_ADD_PARAMETER(progress_callback_t, progress_callback)
 #undef CGAL_DISK_SEGMENTATION_ADD_PARAMETER
 
 } // namespace parameters

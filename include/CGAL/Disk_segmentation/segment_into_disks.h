@@ -10,12 +10,53 @@
 #include <CGAL/Disk_segmentation/refine_to_topological_disks.h>
 #include <CGAL/Disk_segmentation/voronoi_fps_segmentation.h>
 
+#include <CGAL/Real_timer.h>
+
 #include <boost/graph/graph_traits.hpp>
 
 #include <vector>
 
 namespace CGAL {
 namespace Disk_segmentation {
+namespace internal {
+
+// Sizes and wall-clock times of the three steps of one segmentation.
+struct Segmentation_steps
+{
+  std::size_t voronoi_cells = 0, refined_regions = 0, patches = 0;
+  double voronoi_seconds = 0, refine_seconds = 0, merge_seconds = 0;
+};
+
+// The whole method on an indexed mesh; `labels` receives the patch ids.
+template <typename NamedParameters, typename FaceHandles>
+Segmentation_steps segment_indexed(const Indexed_triangle_mesh& m, const FaceHandles& face_handles,
+                                   const NamedParameters& np, std::vector<Index>& labels)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+
+  const std::size_t k = checked_number_of_subsamples(
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_subsamples), std::size_t(5)));
+  const double threshold = merge_threshold_parameter(np);
+
+  Segmentation_steps steps;
+  CGAL::Real_timer timer;
+  timer.start();
+  Voronoi_fps fps(m);
+  const std::vector<Index> seeds = voronoi_fps_labels(m, face_handles, fps, np, labels);
+  steps.voronoi_cells = seeds.size();
+  steps.voronoi_seconds = timer.time();
+  timer.reset();
+  steps.refined_regions = refine_regions(m, fps, group_faces_by_label(labels), k, labels);
+  steps.refine_seconds = timer.time();
+  timer.reset();
+  steps.patches = merge_regions(m, labels, steps.refined_regions, threshold);
+  steps.merge_seconds = timer.time();
+  write_seeds(np, seeds, face_handles);
+  return steps;
+}
+
+} // namespace internal
 
 /// \ingroup PkgDiskSegmentationRef
 ///
@@ -50,24 +91,12 @@ std::size_t segment_into_disks(const TriangleMesh& tm,
                                FacePatchMap face_patch_map,
                                const NamedParameters& np = parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-
-  const std::size_t k = internal::checked_number_of_subsamples(
-    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_subsamples), std::size_t(5)));
-  const double threshold = internal::merge_threshold_parameter(np);
-
   internal::Indexed_triangle_mesh m;
   std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> face_handles;
   internal::build_indexed_triangle_mesh(tm, np, m, face_handles);
 
-  internal::Voronoi_fps fps(m);
   std::vector<internal::Index> labels;
-  const std::vector<internal::Index> seeds = internal::voronoi_fps_labels(m, face_handles, fps, np, labels);
-  const std::size_t refined = internal::refine_regions(m, fps, internal::group_faces_by_label(labels), k, labels);
-  const std::size_t count = internal::merge_regions(m, labels, refined, threshold);
-
-  internal::write_seeds(np, seeds, face_handles);
+  const std::size_t count = internal::segment_indexed(m, face_handles, np, labels).patches;
   internal::write_face_labels(face_handles, labels, face_patch_map);
   return count;
 }

@@ -233,11 +233,13 @@ auto make_coordinates_reader(const TriangleMesh& tm, const NamedParameters& np)
 }
 
 // The whole of `tm` as an indexed mesh, with the face descriptors in index order.
+// `vertex_handles`, when given, receives the vertex descriptors in index order.
 template <typename TriangleMesh, typename NamedParameters>
 void build_indexed_triangle_mesh(const TriangleMesh& tm,
                                  const NamedParameters& np,
                                  Indexed_triangle_mesh& out,
-                                 std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& face_handles)
+                                 std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& face_handles,
+                                 std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>* vertex_handles_out = nullptr)
 {
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef typename GT::vertex_descriptor vertex_descriptor;
@@ -298,6 +300,8 @@ void build_indexed_triangle_mesh(const TriangleMesh& tm,
   std::vector<vertex_descriptor> no_new_vertex;
   build_indexed_triangle_mesh(tm, faces(tm), coordinates_of, face_index_of, vertex_index_of, no_new_vertex, out);
   check_vertices(tm, vertex_handles, out);
+  if(vertex_handles_out != nullptr)
+    vertex_handles_out->swap(vertex_handles);
 }
 
 } // namespace internal

@@ -1,0 +1,65 @@
+// Copyright (c) 2026 The Disk_segmentation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_DISK_SEGMENTATION_PARAMETERIZATION_METHOD_H
+#define CGAL_DISK_SEGMENTATION_PARAMETERIZATION_METHOD_H
+
+#include <CGAL/Disk_segmentation/Input_error.h>
+
+#include <string>
+
+namespace CGAL {
+namespace Disk_segmentation {
+
+/// \ingroup PkgDiskSegmentationRef
+/// The per-chart parameterization methods, all from CGAL's
+/// Surface_mesh_parameterization package. The paper's three methods map as:
+/// harmonic = `DISCRETE_CONFORMAL`, conformal = `LSCM`, ARAP = `ARAP`.
+enum class Parameterization_method
+{
+  /// Discrete conformal map (cotangent weights), border fixed on a circle by arc length.
+  DISCRETE_CONFORMAL,
+  /// Least squares conformal map, free border (two pinned vertices).
+  LSCM,
+  /// As-rigid-as-possible (Liu et al. 2008), free border: from the mean
+  /// value map, up to ten local/global iterations with a cotangent Laplacian
+  /// factored once, each kept only if the chart stays valid.
+  ARAP,
+  /// Mean value coordinates, border fixed on a circle: injective by construction.
+  MEAN_VALUE,
+  /// Tutte's barycentric map, border fixed on a circle: injective by construction.
+  TUTTE
+};
+
+/// \ingroup PkgDiskSegmentationRef
+/// The short name of a method, as the command-line tool spells it:
+/// `conformal`, `lscm`, `arap`, `mvc`, `tutte`.
+inline std::string to_string(Parameterization_method m)
+{
+  switch(m)
+  {
+    case Parameterization_method::DISCRETE_CONFORMAL: return "conformal";
+    case Parameterization_method::LSCM: return "lscm";
+    case Parameterization_method::ARAP: return "arap";
+    case Parameterization_method::MEAN_VALUE: return "mvc";
+    case Parameterization_method::TUTTE: return "tutte";
+  }
+  return "unknown";
+}
+
+/// \ingroup PkgDiskSegmentationRef
+/// The method named `name` (see `to_string()`); throws `Input_error` for an unknown name.
+inline Parameterization_method parameterization_method_from_string(const std::string& name)
+{
+  for(Parameterization_method m : { Parameterization_method::DISCRETE_CONFORMAL, Parameterization_method::LSCM,
+                                    Parameterization_method::ARAP, Parameterization_method::MEAN_VALUE,
+                                    Parameterization_method::TUTTE })
+    if(to_string(m) == name)
+      return m;
+  throw Input_error("unknown parameterization method '" + name + "' (expected conformal, lscm, arap, mvc or tutte)");
+}
+
+} // namespace Disk_segmentation
+} // namespace CGAL
+
+#endif // CGAL_DISK_SEGMENTATION_PARAMETERIZATION_METHOD_H

@@ -1,0 +1,176 @@
+// Copyright (c) 2026 The Disk_segmentation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_DISK_SEGMENTATION_INTERNAL_LOCAL_GLOBAL_ARAP_H
+#define CGAL_DISK_SEGMENTATION_INTERNAL_LOCAL_GLOBAL_ARAP_H
+
+#include <CGAL/disable_warnings.h>
+
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+namespace CGAL {
+namespace Disk_segmentation {
+namespace internal {
+
+// As-rigid-as-possible parameterization (Liu et al. 2008) by local/global
+// iterations, free border.
+//
+// CGAL's ARAP_parameterizer_3 rebuilds and refactors its linear system at
+// every iteration and keeps per-element data in hash maps; measured on a
+// 27.7k-face chart it took seconds. The global step's matrix is the
+// cotangent Laplacian, constant across iterations, so here it is factored
+// once (sparse LDL^T) and each iteration costs one local SVD per triangle and
+// two back-substitutions.
+//
+// `points` are the chart's 3D vertex positions, `triangles` its faces
+// (counterclockwise), `uv` the initial map, improved in place.
+// `is_acceptable(uv)` vets every iterate; a rejected one is replaced by a
+// shorter step from the last valid iterate, and the iterations stop when no
+// step is accepted. From a valid start (e.g. mean value coordinates) the
+// result is therefore always valid. Returns the number of iterations done,
+// or -1 if the factorization fails (degenerate triangles).
+template <typename Acceptance>
+int local_global_arap(const std::vector<std::array<double, 3> >& points,
+                      const std::vector<std::array<std::size_t, 3> >& triangles,
+                      std::vector<std::array<double, 2> >& uv, int iterations,
+                      const Acceptance& is_acceptable)
+{
+  const std::size_t n = points.size(), nt = triangles.size();
+  if(n < 3 || nt == 0)
+    return 0;
+
+  // Each triangle isometrically in its own plane; cotangent of the angle
+  // opposite to each edge (edge i goes from corner i to corner i+1).
+  std::vector<std::array<std::array<double, 2>, 3> > local(nt);
+  std::vector<std::array<double, 3> > cot(nt);
+  for(std::size_t t = 0; t < nt; ++t)
+  {
+    const auto& p0 = points[triangles[t][0]];
+    const auto& p1 = points[triangles[t][1]];
+    const auto& p2 = points[triangles[t][2]];
+    const double e[3] = { p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2] };
+    const double f[3] = { p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2] };
+    const double l = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+    const double cx = e[1] * f[2] - e[2] * f[1], cy = e[2] * f[0] - e[0] * f[2], cz = e[0] * f[1] - e[1] * f[0];
+    const double twice_area = std::sqrt(cx * cx + cy * cy + cz * cz);
+    if(!(l > 0) || !(twice_area > 0))
+      return -1;
+    local[t] = {{ {{ 0., 0. }}, {{ l, 0. }}, {{ (e[0] * f[0] + e[1] * f[1] + e[2] * f[2]) / l, twice_area / l }} }};
+    for(int i = 0; i < 3; ++i)
+    {
+      // Angle at corner i+2, between the edges to corners i and i+1.
+      const auto& a = local[t][i];
+      const auto& b = local[t][(i + 1) % 3];
+      const auto& c = local[t][(i + 2) % 3];
+      const double ux = a[0] - c[0], uy = a[1] - c[1], vx = b[0] - c[0], vy = b[1] - c[1];
+      // Clamped so that needle triangles do not dominate the system.
+      cot[t][i] = (std::max)(-1e4, (std::min)(1e4, (ux * vx + uy * vy) / (ux * vy - uy * vx)));
+    }
+  }
+
+  // Vertex 0 stays where the initial map put it: that removes the
+  // translation from the Laplacian's null space and makes it definite.
+  typedef Eigen::SparseMatrix<double> Matrix;
+  std::vector<Eigen::Triplet<double> > entries;
+  entries.reserve(12 * nt);
+  auto unknown = [](std::size_t v) { return static_cast<Eigen::Index>(v) - 1; };
+  for(std::size_t t = 0; t < nt; ++t)
+    for(int i = 0; i < 3; ++i)
+    {
+      const std::size_t a = triangles[t][i], b = triangles[t][(i + 1) % 3];
+      const double w = 0.5 * cot[t][i];
+      if(a != 0) entries.emplace_back(unknown(a), unknown(a), w);
+      if(b != 0) entries.emplace_back(unknown(b), unknown(b), w);
+      if(a != 0 && b != 0)
+      {
+        entries.emplace_back(unknown(a), unknown(b), -w);
+        entries.emplace_back(unknown(b), unknown(a), -w);
+      }
+    }
+  Matrix laplacian(static_cast<Eigen::Index>(n - 1), static_cast<Eigen::Index>(n - 1));
+  laplacian.setFromTriplets(entries.begin(), entries.end());
+  Eigen::SimplicialLDLT<Matrix> solver(laplacian);
+  if(solver.info() != Eigen::Success)
+    return -1;
+
+  std::vector<std::array<double, 4> > rotation(nt);
+  std::vector<std::array<double, 2> > previous;
+  Eigen::VectorXd rhs_u(n - 1), rhs_v(n - 1);
+  for(int iteration = 0; iteration < iterations; ++iteration)
+  {
+    // Local step: the rotation closest to each triangle's current map.
+    for(std::size_t t = 0; t < nt; ++t)
+    {
+      double s00 = 0, s01 = 0, s10 = 0, s11 = 0;  // sum of w (du)(dx)^T
+      for(int i = 0; i < 3; ++i)
+      {
+        const std::size_t a = triangles[t][i], b = triangles[t][(i + 1) % 3];
+        const double w = cot[t][i];
+        const double dux = uv[a][0] - uv[b][0], duy = uv[a][1] - uv[b][1];
+        const double dxx = local[t][i][0] - local[t][(i + 1) % 3][0], dxy = local[t][i][1] - local[t][(i + 1) % 3][1];
+        s00 += w * dux * dxx; s01 += w * dux * dxy;
+        s10 += w * duy * dxx; s11 += w * duy * dxy;
+      }
+      // argmax over rotations R of trace(R^T S).
+      const double angle = std::atan2(s10 - s01, s00 + s11);
+      rotation[t] = {{ std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle) }};
+    }
+
+    // Global step: L u = sum of w R (x_a - x_b) over edges, vertex 0 fixed.
+    rhs_u.setZero();
+    rhs_v.setZero();
+    for(std::size_t t = 0; t < nt; ++t)
+    {
+      const auto& r = rotation[t];
+      for(int i = 0; i < 3; ++i)
+      {
+        const std::size_t a = triangles[t][i], b = triangles[t][(i + 1) % 3];
+        const double w = 0.5 * cot[t][i];
+        const double dxx = local[t][i][0] - local[t][(i + 1) % 3][0], dxy = local[t][i][1] - local[t][(i + 1) % 3][1];
+        const double ru = r[0] * dxx + r[1] * dxy, rv = r[2] * dxx + r[3] * dxy;
+        if(a != 0) { rhs_u[unknown(a)] += w * ru; rhs_v[unknown(a)] += w * rv; }
+        if(b != 0) { rhs_u[unknown(b)] -= w * ru; rhs_v[unknown(b)] -= w * rv; }
+        // Move the fixed vertex's known term to the right-hand side.
+        if(a == 0 && b != 0) { rhs_u[unknown(b)] += w * uv[0][0]; rhs_v[unknown(b)] += w * uv[0][1]; }
+        if(b == 0 && a != 0) { rhs_u[unknown(a)] += w * uv[0][0]; rhs_v[unknown(a)] += w * uv[0][1]; }
+      }
+    }
+    const Eigen::VectorXd u = solver.solve(rhs_u), v = solver.solve(rhs_v);
+    if(solver.info() != Eigen::Success)
+      return iteration;
+    previous = uv;
+    for(std::size_t i = 1; i < n; ++i)
+      uv[i] = {{ u[unknown(i)], v[unknown(i)] }};
+    // A rejected iterate is pulled back toward the last valid one: a
+    // shorter step along the same direction often stays valid and still
+    // lowers the energy.
+    double step = 1.;
+    while(!is_acceptable(uv))
+    {
+      step /= 2;
+      if(step < 1. / 256)
+      {
+        uv.swap(previous);
+        return iteration;
+      }
+      for(std::size_t i = 1; i < n; ++i)
+        uv[i] = {{ previous[i][0] + step * (u[unknown(i)] - previous[i][0]),
+                   previous[i][1] + step * (v[unknown(i)] - previous[i][1]) }};
+    }
+  }
+  return iterations;
+}
+
+} // namespace internal
+} // namespace Disk_segmentation
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_DISK_SEGMENTATION_INTERNAL_LOCAL_GLOBAL_ARAP_H

@@ -1,0 +1,487 @@
+// Copyright (c) 2026 The Disk_segmentation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_DISK_SEGMENTATION_PACK_PATCHES_H
+#define CGAL_DISK_SEGMENTATION_PACK_PATCHES_H
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Disk_segmentation/Input_error.h>
+#include <CGAL/Disk_segmentation/parameters.h>
+#include <CGAL/Disk_segmentation/internal/Chart_packer.h>
+#include <CGAL/Disk_segmentation/internal/Indexed_triangle_mesh.h>
+#include <CGAL/Disk_segmentation/internal/packing_geometry.h>
+
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/number_utils.h>
+
+#include <boost/graph/graph_traits.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <iterator>
+#include <sstream>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Disk_segmentation {
+
+/// \ingroup PkgDiskSegmentationRef
+/// How `pack_patches()` places the charts in the unit square.
+enum class Packing_method
+{
+  /// One texel density for all charts (each chart keeps its 3D size
+  /// relative to the others), charts boxed by their minimum-area rectangle
+  /// and packed tightly. The default.
+  TIGHT,
+  /// The paper's packer: a `ceil(sqrt(P)) x ceil(sqrt(P))` grid of equal
+  /// square cells in patch id order, every chart rotated and scaled to fill
+  /// its cell. Texel density differs from chart to chart.
+  GRID
+};
+
+/// \ingroup PkgDiskSegmentationRef
+/// What `pack_patches()` did.
+struct Packing_report
+{
+  /// Number of charts (patches) placed.
+  std::size_t number_of_charts = 0;
+  /// Sum of the UV areas of all faces after packing, i.e. the covered
+  /// fraction of the unit square (in `[0, 1]`).
+  double efficiency = 0;
+  /// `Packing_method::TIGHT`: texels of the target texture per unit of 3D
+  /// length, the same for all charts. `Packing_method::GRID`: 0.
+  double texels_per_unit = 0;
+};
+
+namespace internal {
+
+struct Packing_settings
+{
+  Packing_method method;
+  double resolution;
+  double padding;  // in texels
+};
+
+template <typename NamedParameters>
+Packing_settings packing_settings(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Packing_settings s;
+  s.method = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::packing_method),
+                              Packing_method::TIGHT);
+  if(s.method != Packing_method::TIGHT && s.method != Packing_method::GRID)
+    throw Input_error("pack_patches: packing_method is not a Packing_method value");
+
+  // Read through double so that a negative signed argument is caught rather
+  // than wrapped around.
+  s.resolution = static_cast<double>(
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::texture_resolution), 1024u));
+  if(!(s.resolution >= 1.) || !std::isfinite(s.resolution))
+    throw Input_error("pack_patches: texture_resolution must be at least 1");
+
+  s.padding = static_cast<double>(
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::padding_in_texels), 2.));
+  if(!(s.padding >= 0.) || !std::isfinite(s.padding))
+    throw Input_error("pack_patches: padding_in_texels must be a finite number >= 0");
+  if(!(2. * s.padding < s.resolution))
+    throw Input_error("pack_patches: padding_in_texels leaves no room: twice the padding must be "
+                      "less than texture_resolution");
+  return s;
+}
+
+template <typename Id>
+std::size_t checked_patch_id(const Id& id, std::size_t face, std::size_t number_of_faces)
+{
+  bool negative = false;
+  if constexpr(std::is_signed<Id>::value)
+    negative = id < 0;
+  const std::size_t i = static_cast<std::size_t>(id);
+  // A valid id is below the number of patches, hence below the number of faces.
+  if(negative || i >= number_of_faces)
+    throw Input_error("pack_patches: face #" + std::to_string(face) +
+                      " has a patch id outside [0, number of faces); patch ids must be "
+                      "contiguous in [0, number of patches)");
+  return i;
+}
+
+template <typename UVPoint>
+Packing_point to_packing_point(const UVPoint& p)
+{
+  return { CGAL::to_double(p.x()), CGAL::to_double(p.y()) };
+}
+
+inline std::string patch_name(std::size_t p) { return "patch #" + std::to_string(p); }
+
+// A chart's placement: uv -> scale * rotation(uv) + (tx, ty).
+struct Chart_similarity
+{
+  Packing_rotation rotation;
+  double scale = 0., tx = 0., ty = 0.;
+};
+
+// The charts of the mesh and what the layouts need of them.
+template <typename TriangleMesh>
+struct Chart_set
+{
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+
+  std::vector<face_descriptor> faces;        // in faces(tm) order
+  std::vector<std::size_t> patch_of;         // face -> patch
+  // The UVs of the corners grouped by patch (faces(tm) order within a
+  // patch), so that each chart is read from one contiguous run; patch p
+  // owns the corners [3 first_face[p], 3 first_face[p + 1]).
+  std::vector<Packing_point> corners;
+  std::vector<std::size_t> first_face;       // P + 1 entries
+  std::vector<double> uv_area, surface_area;
+  std::vector<Packing_rotation> rotation;    // chosen frame of each chart
+  std::vector<Packing_box> box;              // bounding box of the chart's UVs in that frame
+
+  std::size_t size() const { return uv_area.size(); }
+};
+
+template <typename TriangleMesh, typename FacePatchMap, typename UVMap, typename NamedParameters>
+void collect_charts(const TriangleMesh& tm, const FacePatchMap& face_patch_map, const UVMap& uv_map,
+                    bool with_surface_area, const NamedParameters& np, Chart_set<TriangleMesh>& charts)
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  typedef typename GT::face_descriptor face_descriptor;
+
+  const std::size_t number_of_faces = static_cast<std::size_t>(std::distance(faces(tm).begin(), faces(tm).end()));
+  charts.faces.clear();
+  charts.patch_of.clear();
+  charts.faces.reserve(number_of_faces);
+  charts.patch_of.reserve(number_of_faces);
+  std::size_t number_of_patches = 0;
+  for(face_descriptor f : faces(tm))
+  {
+    const std::size_t p = checked_patch_id(get(face_patch_map, f), charts.faces.size(), number_of_faces);
+    number_of_patches = (std::max)(number_of_patches, p + 1);
+    charts.faces.push_back(f);
+    charts.patch_of.push_back(p);
+  }
+
+  charts.first_face.assign(number_of_patches + 1, 0);
+  for(std::size_t p : charts.patch_of)
+    ++charts.first_face[p + 1];
+  for(std::size_t p = 0; p < number_of_patches; ++p)
+  {
+    if(charts.first_face[p + 1] == 0)
+      throw Input_error("pack_patches: " + patch_name(p) + " has no face; patch ids must be "
+                        "contiguous in [0, number of patches)");
+    charts.first_face[p + 1] += charts.first_face[p];
+  }
+
+  // One pass in faces(tm) order, which is also memory order for the usual
+  // meshes; the corners are scattered to their patch's run.
+  charts.uv_area.assign(number_of_patches, 0.);
+  charts.surface_area.assign(number_of_patches, 0.);
+  charts.corners.resize(3 * number_of_faces);
+  std::vector<std::size_t> cursor(charts.first_face.begin(), charts.first_face.end() - 1);
+  const auto coordinates_of = make_coordinates_reader(tm, np);
+  for(std::size_t i = 0; i < number_of_faces; ++i)
+  {
+    const std::size_t p = charts.patch_of[i];
+    const halfedge_descriptor h0 = halfedge(charts.faces[i], tm);
+    const halfedge_descriptor h1 = next(h0, tm), h2 = next(h1, tm);
+    if(next(h2, tm) != h0)
+      throw Input_error("pack_patches: face #" + std::to_string(i) + " is not a triangle");
+    Packing_point* corner = &charts.corners[3 * cursor[p]++];
+    corner[0] = to_packing_point(get(uv_map, h0));
+    corner[1] = to_packing_point(get(uv_map, h1));
+    corner[2] = to_packing_point(get(uv_map, h2));
+    // A non-finite UV makes the patch's area non-finite, reported below.
+    charts.uv_area[p] += 0.5 * packing_cross(corner[0], corner[1], corner[2]);
+    if(with_surface_area)
+    {
+      const std::array<double, 3> x = coordinates_of(target(h0, tm));
+      const std::array<double, 3> y = coordinates_of(target(h1, tm));
+      const std::array<double, 3> z = coordinates_of(target(h2, tm));
+      const double ux = y[0] - x[0], uy = y[1] - x[1], uz = y[2] - x[2];
+      const double vx = z[0] - x[0], vy = z[1] - x[1], vz = z[2] - x[2];
+      const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+      charts.surface_area[p] += 0.5 * std::sqrt(nx * nx + ny * ny + nz * nz);
+    }
+  }
+
+  for(std::size_t p = 0; p < number_of_patches; ++p)
+  {
+    if(!(charts.uv_area[p] > 0.) || !std::isfinite(charts.uv_area[p]))
+      throw Input_error("pack_patches: " + patch_name(p) + " has a zero, negative or non-finite UV area");
+    if(with_surface_area && (!(charts.surface_area[p] > 0.) || !std::isfinite(charts.surface_area[p])))
+      throw Input_error("pack_patches: " + patch_name(p) + " has a zero or non-finite 3D area");
+  }
+}
+
+// Chooses every chart's frame and boxes the chart in it. The rotation is
+// chosen on the convex hull of the chart's UVs; the box is then taken over
+// all of them, so that it holds the chart whatever rounding did to the hull.
+// Releases the corners, which are not needed afterwards.
+template <typename TriangleMesh>
+void frame_charts(Packing_method method, Chart_set<TriangleMesh>& charts)
+{
+  charts.rotation.assign(charts.size(), Packing_rotation());
+  charts.box.assign(charts.size(), Packing_box());
+  std::vector<Packing_point> points, hull;
+  for(std::size_t p = 0; p < charts.size(); ++p)
+  {
+    const auto begin = charts.corners.begin() + static_cast<std::ptrdiff_t>(3 * charts.first_face[p]);
+    const auto end = charts.corners.begin() + static_cast<std::ptrdiff_t>(3 * charts.first_face[p + 1]);
+    points.assign(begin, end);
+    convex_hull(points, hull);
+
+    Packing_rotation r;
+    if(method == Packing_method::TIGHT)
+      r = Packing_rotation::aligning(minimum_area_box_direction(hull));
+    else
+      r = Packing_rotation::aligning(minimum_square_box_direction(hull));
+    Packing_box b;
+    for(auto it = begin; it != end; ++it)
+      b.add(r(*it));
+    // Tight packing lays the longer side horizontally.
+    if(method == Packing_method::TIGHT && b.height() > b.width())
+    {
+      r = r.quarter_turned();
+      b = b.quarter_turned();
+    }
+    charts.rotation[p] = r;
+    charts.box[p] = b;
+  }
+  std::vector<Packing_point>().swap(charts.corners);
+}
+
+// Extra gap, in UV units, on top of the requested padding, that absorbs the
+// rounding of the final similarity (coordinates are at most 1).
+constexpr double packing_rounding_margin = 1e-12;
+
+template <typename TriangleMesh>
+std::vector<Chart_similarity> tight_layout(const Chart_set<TriangleMesh>& charts, const Packing_settings& s,
+                                           double& global_scale)
+{
+  const std::size_t n = charts.size();
+  const double pad = s.padding / s.resolution + packing_rounding_margin;
+  // Sizes at one UV unit per 3D unit of length.
+  std::vector<double> density(n), w(n), h(n);
+  for(std::size_t p = 0; p < n; ++p)
+  {
+    density[p] = std::sqrt(charts.surface_area[p] / charts.uv_area[p]);
+    w[p] = density[p] * charts.box[p].width();
+    h[p] = density[p] * charts.box[p].height();
+  }
+  // Rectangles grown by the padding on their right and top fill [pad, 1]^2:
+  // this leaves the padding between any two of them and along every side.
+  const Square_packing packing = pack_in_square(w, h, pad, 1. - pad);
+  if(!(packing.scale > 0.))
+  {
+    std::ostringstream message;
+    message << "pack_patches: padding_in_texels (" << s.padding << ") is too large to place " << n
+            << " charts on a texture of " << s.resolution << " texels";
+    throw Input_error(message.str());
+  }
+  global_scale = packing.scale;
+
+  std::vector<Chart_similarity> result(n);
+  for(std::size_t p = 0; p < n; ++p)
+  {
+    const Packed_rectangle& rect = packing.rectangles[p];
+    Chart_similarity& sim = result[p];
+    sim.rotation = charts.rotation[p];
+    Packing_box b = charts.box[p];
+    if(rect.rotated)
+    {
+      sim.rotation = sim.rotation.quarter_turned();
+      b = b.quarter_turned();
+    }
+    sim.scale = packing.scale * density[p];
+    sim.tx = pad + rect.x - sim.scale * b.xmin;
+    sim.ty = pad + rect.y - sim.scale * b.ymin;
+  }
+  return result;
+}
+
+template <typename TriangleMesh>
+std::vector<Chart_similarity> grid_layout(const Chart_set<TriangleMesh>& charts, const Packing_settings& s)
+{
+  const std::size_t n = charts.size();
+  std::size_t columns = static_cast<std::size_t>(std::sqrt(static_cast<double>(n)));
+  while(columns * columns < n) ++columns;
+  while(columns > 1 && (columns - 1) * (columns - 1) >= n) --columns;
+
+  // Cells tile [pad/2, 1 - pad/2]^2 and every chart keeps pad/2 inside its
+  // cell: charts are pad apart from each other and from the sides.
+  const double pad = s.padding / s.resolution + packing_rounding_margin;
+  const double cell = (1. - pad) / static_cast<double>(columns);
+  const double room = cell - pad;
+  if(!(room > 0.))
+  {
+    std::ostringstream message;
+    message << "pack_patches: padding_in_texels (" << s.padding << ") is too large for a grid of " << columns
+            << " x " << columns << " cells on a texture of " << s.resolution << " texels";
+    throw Input_error(message.str());
+  }
+
+  std::vector<Chart_similarity> result(n);
+  for(std::size_t p = 0; p < n; ++p)
+  {
+    const Packing_box& b = charts.box[p];
+    Chart_similarity& sim = result[p];
+    sim.rotation = charts.rotation[p];
+    sim.scale = room / (std::max)(b.width(), b.height());
+    const double cx = 0.5 * pad + (static_cast<double>(p % columns) + 0.5) * cell;
+    const double cy = 0.5 * pad + (static_cast<double>(p / columns) + 0.5) * cell;
+    sim.tx = cx - sim.scale * 0.5 * (b.xmin + b.xmax);
+    sim.ty = cy - sim.scale * 0.5 * (b.ymin + b.ymax);
+  }
+  return result;
+}
+
+} // namespace internal
+
+/// \ingroup PkgDiskSegmentationRef
+///
+/// Places the UV charts of the patches of `tm` in the unit square without
+/// overlap: every chart is moved by one similarity of its own (uniform scale,
+/// rotation and translation, never a reflection, so the winding of its faces
+/// is kept), all charts end inside \f$ [0,1]^2 \f$, and the axis-aligned
+/// bounding rectangles of any two charts, and of a chart and the sides of the
+/// square, are at least `padding_in_texels / texture_resolution` apart.
+///
+/// With `Packing_method::TIGHT` (the default), every chart is first scaled by
+/// \f$ \sqrt{A_{3D} / A_{UV}} \f$ so that all have the same texel density,
+/// rotated so that its minimum-area bounding rectangle (rotating calipers on
+/// the convex hull of its UVs) is axis-aligned with its longer side
+/// horizontal, and the rectangles are packed by a best-fit skyline packer
+/// (each step fills the lowest gap with the widest rectangle that fits it),
+/// which may turn a rectangle by a quarter turn to fill a gap. A search
+/// guided by each trial's packing density, then bisection, finds the largest
+/// common scale (to 0.05 percent) at which the packing fits in the square;
+/// the padding, fixed in texels, does not scale with the charts.
+///
+/// With `Packing_method::GRID` (the paper's packer), chart `i` goes to cell
+/// `i` of a `ceil(sqrt(P)) x ceil(sqrt(P))` grid of equal square cells, row by
+/// row from the bottom left (the UV origin). Each chart is turned by the
+/// rotation that lets it be scaled largest in a square (found exactly over
+/// the convex hull: edge directions and the angles where width equals
+/// height), scaled to fill its cell less the padding, and centered.
+///
+/// The result is deterministic: it depends only on the input, in the order of
+/// `faces(tm)`. Time is \f$ O(N \log N) \f$ for `N` UV corners plus, for
+/// `TIGHT`, \f$ O(P \log P) \f$ per trial packing (typically under ten).
+/// Memory is \f$ O(N + P) \f$: the corners are copied once, grouped by chart.
+///
+/// @tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeGraph` whose
+///         faces are triangles
+/// @tparam FacePatchMap a model of `ReadablePropertyMap` with
+///         `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and
+///         an integral value type
+/// @tparam UVMap a model of `ReadWritePropertyMap` with
+///         `boost::graph_traits<TriangleMesh>::%halfedge_descriptor` as key type
+///         and a 2D point as value type (with `x()`, `y()` and a constructor
+///         from two `double`s, e.g. `Kernel::Point_2`)
+/// @tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+///
+/// @param tm a triangle mesh
+/// @param face_patch_map the patch id of every face, contiguous in
+///        `[0, P)`, as written by `segment_into_disks()`
+/// @param uv_map per-corner UVs: `uv_map[h]` is the UV of `target(h)` as seen
+///        from `face(h)`; halfedges without a face are neither read nor
+///        written. On entry, the charts may have any position, scale and
+///        rotation, but every face must have a positive signed UV area
+///        (counterclockwise); on return they are packed. Each halfedge must
+///        hold its own value (a map that shares storage between halfedges,
+///        e.g. one that reads per vertex, would be moved twice).
+/// @param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{packing_method}
+///     \cgalParamDescription{how the charts are placed}
+///     \cgalParamType{`Packing_method`}
+///     \cgalParamDefault{`Packing_method::TIGHT`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{texture_resolution}
+///     \cgalParamDescription{side, in texels, of the texture the atlas is made for}
+///     \cgalParamType{`unsigned int`}
+///     \cgalParamDefault{`1024`}
+///     \cgalParamExtra{must be at least 1}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{padding_in_texels}
+///     \cgalParamDescription{gap kept between the charts' bounding rectangles and along the sides of the square, in texels}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`2`}
+///     \cgalParamExtra{must be finite, >= 0 and less than half of `texture_resolution`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm` (3D areas of `TIGHT`)}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key type and the traits' `Point_3` as value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{an instance of a geometric traits class, used to read coordinates}
+///     \cgalParamType{a model of `Kernel`}
+///     \cgalParamDefault{a \cgal Kernel deduced from the point type}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// @return a `Packing_report`; a mesh without faces gives 0 charts and leaves
+///         `uv_map` untouched
+///
+/// @throws Input_error if a parameter is out of range, a face is not a
+///         triangle, a patch id is out of range or a patch has no face, a
+///         patch has a zero, negative or non-finite UV area (or, for `TIGHT`,
+///         3D area), or the padding leaves no room for all charts. `uv_map`
+///         is not written then.
+template <typename TriangleMesh, typename FacePatchMap, typename UVMap,
+          typename NamedParameters = parameters::Default_named_parameters>
+Packing_report pack_patches(const TriangleMesh& tm,
+                            FacePatchMap face_patch_map,
+                            UVMap uv_map,
+                            const NamedParameters& np = parameters::default_values())
+{
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+  typedef typename boost::property_traits<UVMap>::value_type UV_point;
+
+  const internal::Packing_settings settings = internal::packing_settings(np);
+  Packing_report report;
+  if(faces(tm).empty())
+    return report;
+
+  const bool tight = settings.method == Packing_method::TIGHT;
+  internal::Chart_set<TriangleMesh> charts;
+  internal::collect_charts(tm, face_patch_map, uv_map, tight, np, charts);
+  internal::frame_charts(settings.method, charts);
+
+  double global_scale = 0.;
+  const std::vector<internal::Chart_similarity> placement =
+    tight ? internal::tight_layout(charts, settings, global_scale) : internal::grid_layout(charts, settings);
+
+  // Every halfedge of a face is written once, so nothing is moved twice.
+  for(std::size_t i = 0; i < charts.faces.size(); ++i)
+  {
+    const internal::Chart_similarity& sim = placement[charts.patch_of[i]];
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(charts.faces[i], tm), tm))
+    {
+      const internal::Packing_point q = sim.rotation(internal::to_packing_point(get(uv_map, h)));
+      put(uv_map, h, UV_point(sim.scale * q.x + sim.tx, sim.scale * q.y + sim.ty));
+    }
+  }
+  for(std::size_t p = 0; p < charts.size(); ++p)
+    report.efficiency += placement[p].scale * placement[p].scale * charts.uv_area[p];
+  report.number_of_charts = charts.size();
+  report.texels_per_unit = tight ? global_scale * settings.resolution : 0.;
+  return report;
+}
+
+} // namespace Disk_segmentation
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_DISK_SEGMENTATION_PACK_PATCHES_H

@@ -1,0 +1,359 @@
+// Copyright (c) 2026 The Disk_segmentation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_DISK_SEGMENTATION_PARAMETERIZE_PATCHES_H
+#define CGAL_DISK_SEGMENTATION_PARAMETERIZE_PATCHES_H
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Disk_segmentation/Input_error.h>
+#include <CGAL/Disk_segmentation/Parameterization_method.h>
+#include <CGAL/Disk_segmentation/parameters.h>
+#include <CGAL/Disk_segmentation/refine_to_topological_disks.h>
+#include <CGAL/Disk_segmentation/internal/Chart_parameterization.h>
+#include <CGAL/Disk_segmentation/internal/Face_partition.h>
+#include <CGAL/Disk_segmentation/internal/Indexed_triangle_mesh.h>
+#include <CGAL/Disk_segmentation/internal/Progress.h>
+#include <CGAL/Disk_segmentation/internal/Region_topology.h>
+#include <CGAL/Disk_segmentation/internal/Voronoi_fps.h>
+
+#include <CGAL/boost/graph/iterator.h>
+
+#include <boost/graph/graph_traits.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+#endif
+
+#include <algorithm>
+#include <memory>
+#include <numeric>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Disk_segmentation {
+
+/// \ingroup PkgDiskSegmentationRef
+/// What happened to one chart in `parameterize_patches()`.
+struct Chart_report
+{
+  /// Patch id of the chart (after splits, see `split`).
+  std::size_t patch = 0;
+  /// Number of faces of the chart.
+  std::size_t faces = 0;
+  /// Method asked for.
+  Parameterization_method requested = Parameterization_method::LSCM;
+  /// Method whose result was kept.
+  Parameterization_method used = Parameterization_method::LSCM;
+  /// `true` if `used` differs from `requested` because the requested result was invalid.
+  bool fallback = false;
+  /// `true` if the chart is a piece of a patch that had to be split because no method gave a valid chart.
+  bool split = false;
+  /// `true` if the chart's UVs are valid (finite, no flipped or degenerate triangle, simple border).
+  bool valid = false;
+  /// Why the requested method's result was rejected; empty if it was kept.
+  std::string problem;
+  /// Area-weighted mean of |log(s1/s2)| over the chart (0 for an isometry).
+  double angle_distortion = 0;
+  /// Area-weighted mean of |log(s1 s2)| with the chart scaled to its 3D area (0 for an isometry).
+  double area_distortion = 0;
+};
+
+/// \ingroup PkgDiskSegmentationRef
+/// Summary of `parameterize_patches()`.
+struct Parameterization_report
+{
+  /// One entry per chart, by patch id.
+  std::vector<Chart_report> charts;
+  /// Charts that needed a fallback method.
+  std::size_t number_of_fallbacks = 0;
+  /// Patches split because no method gave a valid chart.
+  std::size_t number_of_split_patches = 0;
+  /// Charts left invalid (only possible with `use_fallback(false)`).
+  std::size_t number_of_invalid_charts = 0;
+};
+
+/// \ingroup PkgDiskSegmentationRef
+/// The method `parameterize_patches()` uses when none is given: ARAP. It
+/// starts from the injective mean value map and keeps only iterates that
+/// stay valid, so it never needs a fallback when mean value coordinates
+/// succeed, and it has the lowest area distortion of all methods (see the
+/// README for the measurements behind this choice).
+constexpr Parameterization_method default_parameterization_method = Parameterization_method::ARAP;
+
+namespace internal {
+
+template <typename NamedParameters>
+unsigned int number_of_threads_parameter(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  return choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_threads), 0u);
+}
+
+// Runs `work(i)` for i in [0, n), on up to `threads` threads (0: TBB's
+// choice). Each call must touch only its own data.
+template <typename Work>
+void for_each_index(std::size_t n, unsigned int threads, const Work& work)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if(threads != 1)
+  {
+    tbb::task_arena arena(threads == 0 ? tbb::task_arena::automatic : static_cast<int>(threads));
+    arena.execute([&] {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1), [&](const tbb::blocked_range<std::size_t>& r) {
+        for(std::size_t i = r.begin(); i != r.end(); ++i)
+          work(i);
+      });
+    });
+    return;
+  }
+#else
+  CGAL_USE(threads);
+#endif
+  for(std::size_t i = 0; i < n; ++i)
+    work(i);
+}
+
+// Splits a chart that no method could parameterize into Voronoi cells of two
+// seeds, refined to disks; each piece is then parameterized on its own.
+// Pieces shrink at every split and single triangles always succeed (unless
+// degenerate in 3D), so the recursion ends.
+inline void split_and_parameterize(const Indexed_triangle_mesh& m, Voronoi_fps& fps, const std::vector<Index>& faces,
+                                   Parameterization_method requested, std::vector<Chart>& pieces,
+                                   std::vector<Chart_outcome>& outcomes)
+{
+  if(faces.size() < 2)
+    return;
+  fps.run(faces, 2);
+  std::vector<std::vector<Index> > cells(2);
+  for(Index f : faces)
+    cells[fps.cell(f)].push_back(f);
+  std::vector<Index> labels;
+  const std::size_t count = refine_regions(m, fps, cells, 5, labels);
+  std::vector<std::vector<Index> > parts(count);
+  for(Index f : faces)
+    parts[labels[f]].push_back(f);
+  for(const std::vector<Index>& part : parts)
+  {
+    Chart c = make_chart(m, part);
+    const Chart_outcome outcome = parameterize_chart(m, c, requested, true);
+    if(outcome.valid || part.size() == 1)
+    {
+      pieces.push_back(std::move(c));
+      outcomes.push_back(outcome);
+    }
+    else
+      split_and_parameterize(m, fps, part, requested, pieces, outcomes);
+  }
+}
+
+} // namespace internal
+
+/// \ingroup PkgDiskSegmentationRef
+///
+/// Parameterizes every patch of `tm` on its own with CGAL's
+/// Surface_mesh_parameterization, in parallel, and writes per-corner UVs.
+///
+/// Each chart is validated: finite UVs, every triangle keeps the 3D winding
+/// with a non-negligible area (charts that come out mirrored are mirrored
+/// back), and the UV border is a simple polygon; together these make the
+/// chart injective. With `use_fallback` (the default), an invalid chart is
+/// redone with mean value coordinates, then Tutte's barycentric map, both on
+/// a circle and injective by construction; if even those fail numerically,
+/// the patch is split in two and each piece redone, and the pieces get new
+/// patch ids (appended after the existing ones) in `face_patch_map`.
+///
+/// UVs are per corner: `uv_map[h]` is the UV of `target(h)` as seen from
+/// `face(h)`, so charts are cut along patch borders. Charts are not placed
+/// relative to each other: see `pack_patches()`.
+///
+/// Charts do not depend on each other, and each is computed the same way on
+/// any thread, so results do not depend on the number of threads.
+///
+/// @tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph` whose faces are triangles
+/// @tparam FacePatchMap a model of `ReadWritePropertyMap` with `face_descriptor` as key type and an
+///         integral value type; patch ids must be contiguous, `0` to `P - 1`
+/// @tparam UVMap a model of `WritablePropertyMap` with `halfedge_descriptor` as key type and a 2D
+///         point type (constructible from two `double`) as value type
+/// @tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+///
+/// @param tm a triangle mesh, manifold, without garbage
+/// @param face_patch_map the patches, each a topological disk (see `segment_into_disks()`)
+/// @param uv_map receives the UVs
+/// @param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{parameterization_method}
+///     \cgalParamDescription{the method of every chart}
+///     \cgalParamType{`Parameterization_method`}
+///     \cgalParamDefault{`default_parameterization_method` (ARAP)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{use_fallback}
+///     \cgalParamDescription{whether invalid charts are redone (see above); when `false`, they are
+///       kept as the method produced them and reported invalid}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_threads}
+///     \cgalParamDescription{maximum number of threads (0: TBB's choice; 1: sequential). Without TBB, sequential.}
+///     \cgalParamType{`unsigned int`}
+///     \cgalParamDefault{`0`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{progress_callback}
+///     \cgalParamDescription{called with `("parameterization", charts done, charts)` after each chart}
+///     \cgalParamType{`std::function<void(const std::string&, std::size_t, std::size_t)>`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key type and the traits' `Point_3` as value type}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{an instance of a geometric traits class, used to read coordinates}
+///     \cgalParamType{a model of `Kernel`}
+///     \cgalParamDefault{a \cgal Kernel deduced from the point type}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_index_map, vertex_index_map}
+///     \cgalParamDescription{as in `voronoi_fps_segmentation()`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// @return one report per chart and the counts of fallbacks, splits and invalid charts
+///
+/// @throws Input_error on a bad mesh (as `voronoi_fps_segmentation()`), on patch ids that are not
+///         contiguous, or on a patch that is not a topological disk.
+template <typename TriangleMesh, typename FacePatchMap, typename UVMap,
+          typename NamedParameters = parameters::Default_named_parameters>
+Parameterization_report parameterize_patches(const TriangleMesh& tm,
+                                             FacePatchMap face_patch_map,
+                                             UVMap uv_map,
+                                             const NamedParameters& np = parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  typedef typename boost::property_traits<UVMap>::value_type UV;
+  using internal::Index;
+
+  const Parameterization_method method =
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::parameterization_method),
+                     default_parameterization_method);
+  const bool use_fallback = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::use_fallback), true);
+  const unsigned int threads = internal::number_of_threads_parameter(np);
+
+  internal::Indexed_triangle_mesh m;
+  std::vector<typename GT::face_descriptor> face_handles;
+  std::vector<typename GT::vertex_descriptor> vertex_handles;
+  internal::build_indexed_triangle_mesh(tm, np, m, face_handles, &vertex_handles);
+
+  const std::vector<std::size_t> ids = internal::read_face_labels(face_handles, face_patch_map);
+  const std::size_t number_of_patches = *std::max_element(ids.begin(), ids.end()) + 1;
+  std::vector<std::vector<Index> > patch_faces(number_of_patches);
+  for(Index f = 0; f < ids.size(); ++f)
+    patch_faces[ids[f]].push_back(f);
+  internal::Region_topology topology(m);
+  for(std::size_t p = 0; p < number_of_patches; ++p)
+  {
+    if(patch_faces[p].empty())
+      throw Input_error("patch ids are not contiguous: no face has id " + std::to_string(p));
+    if(!topology.is_disk(patch_faces[p]))
+      throw Input_error("patch " + std::to_string(p) + " is not a topological disk");
+  }
+
+  // Largest charts first, so that threads end together.
+  std::vector<std::size_t> order(number_of_patches);
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return patch_faces[a].size() > patch_faces[b].size(); });
+
+  std::vector<internal::Chart> charts(number_of_patches);
+  std::vector<internal::Chart_outcome> outcomes(number_of_patches);
+  internal::Progress progress = internal::Progress::from(np);
+  internal::for_each_index(number_of_patches, threads, [&](std::size_t i) {
+    const std::size_t p = order[i];
+    charts[p] = internal::make_chart(m, patch_faces[p]);
+    outcomes[p] = internal::parameterize_chart(m, charts[p], method, use_fallback);
+    progress.step("parameterization", number_of_patches);
+  });
+
+  Parameterization_report report;
+  // Splitting is rare: done after the parallel pass, in patch order.
+  std::unique_ptr<internal::Voronoi_fps> fps;
+  for(std::size_t p = 0; p < number_of_patches; ++p)
+  {
+    if(outcomes[p].valid || !use_fallback || charts[p].faces.size() < 2)
+      continue;
+    if(!fps)
+      fps.reset(new internal::Voronoi_fps(m));
+    std::vector<internal::Chart> pieces;
+    std::vector<internal::Chart_outcome> piece_outcomes;
+    internal::split_and_parameterize(m, *fps, charts[p].faces, method, pieces, piece_outcomes);
+    ++report.number_of_split_patches;
+    const std::string problem = outcomes[p].problem;
+    for(std::size_t i = 0; i < pieces.size(); ++i)
+    {
+      piece_outcomes[i].problem = problem;
+      if(i == 0)
+      {
+        charts[p] = std::move(pieces[0]);
+        outcomes[p] = piece_outcomes[0];
+      }
+      else
+      {
+        charts.push_back(std::move(pieces[i]));
+        outcomes.push_back(piece_outcomes[i]);
+      }
+    }
+  }
+
+  report.charts.resize(charts.size());
+  for(std::size_t p = 0; p < charts.size(); ++p)
+  {
+    const internal::Chart& c = charts[p];
+    Chart_report& r = report.charts[p];
+    r.patch = p;
+    r.faces = c.faces.size();
+    r.requested = method;
+    r.used = outcomes[p].used;
+    r.fallback = outcomes[p].fallback;
+    r.split = (p >= number_of_patches) || (c.faces.size() != patch_faces[p].size());
+    r.valid = outcomes[p].valid;
+    r.problem = outcomes[p].problem;
+    const internal::Chart_distortion d = internal::chart_distortion(m, c);
+    r.angle_distortion = d.angle;
+    r.area_distortion = d.area;
+    report.number_of_fallbacks += r.fallback ? 1 : 0;
+    report.number_of_invalid_charts += r.valid ? 0 : 1;
+
+    // The corner of face f whose target is indexed vertex v gets uv[local v].
+    for(std::size_t t = 0; t < c.faces.size(); ++t)
+    {
+      const Index f = c.faces[t];
+      if(p >= number_of_patches || c.faces.size() != patch_faces[p].size())
+        put(face_patch_map, face_handles[f],
+            static_cast<typename boost::property_traits<FacePatchMap>::value_type>(p));
+      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(face_handles[f], tm), tm))
+        for(int j = 0; j < 3; ++j)
+          if(vertex_handles[m.corners[f][j]] == target(h, tm))
+          {
+            const std::array<double, 2>& u = c.uv[c.triangles[t][j]];
+            put(uv_map, h, UV(u[0], u[1]));
+          }
+    }
+  }
+  return report;
+}
+
+} // namespace Disk_segmentation
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_DISK_SEGMENTATION_PARAMETERIZE_PATCHES_H

@@ -1,0 +1,136 @@
+// Copyright (c) 2026 The Disk_segmentation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_DISK_SEGMENTATION_UV_ATLAS_H
+#define CGAL_DISK_SEGMENTATION_UV_ATLAS_H
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Disk_segmentation/pack_patches.h>
+#include <CGAL/Disk_segmentation/parameterize_patches.h>
+#include <CGAL/Disk_segmentation/segment_into_disks.h>
+#include <CGAL/Disk_segmentation/internal/Progress.h>
+
+#include <CGAL/Dynamic_property_map.h>
+#include <CGAL/Real_timer.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <vector>
+
+namespace CGAL {
+namespace Disk_segmentation {
+
+/// \ingroup PkgDiskSegmentationRef
+/// What `uv_atlas()` did, stage by stage. Times are wall-clock seconds.
+struct Atlas_report
+{
+  /// Number of faces of the mesh.
+  std::size_t number_of_faces = 0;
+  /// Voronoi cells (at least the number of connected components).
+  std::size_t number_of_voronoi_cells = 0;
+  /// Disks after refinement, before merging.
+  std::size_t number_of_refined_regions = 0;
+  /// Charts of the atlas (patches after merging, plus pieces of split patches).
+  std::size_t number_of_charts = 0;
+  /// Per-chart methods, fallbacks and distortion.
+  Parameterization_report parameterization;
+  /// Packing efficiency and texel density.
+  Packing_report packing;
+
+  double voronoi_seconds = 0, refine_seconds = 0, merge_seconds = 0;
+  double parameterization_seconds = 0, packing_seconds = 0, total_seconds = 0;
+};
+
+/// \ingroup PkgDiskSegmentationRef
+///
+/// Computes a complete UV atlas of `tm`: `segment_into_disks()`, then
+/// `parameterize_patches()`, then `pack_patches()`. Every chart is a
+/// topological disk with valid UVs (no flipped or degenerate triangle, simple
+/// border) unless `use_fallback(false)` is given, and the charts are placed
+/// without overlap in \f$ [0,1]^2 \f$.
+///
+/// @tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph` whose faces are triangles
+/// @tparam UVMap a model of `WritablePropertyMap` with `halfedge_descriptor` as key type and a 2D
+///         point type (constructible from two `double`, with `x()` and `y()`) as value type
+/// @tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+///
+/// @param tm a triangle mesh, manifold, without garbage
+/// @param uv_map receives per-corner UVs: `uv_map[h]` is the UV of `target(h)` in `face(h)`
+/// @param np an optional sequence of \ref bgl_namedparameters "Named Parameters": those of
+///        `segment_into_disks()`, `parameterize_patches()` and `pack_patches()`, and
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{face_patch_map}
+///     \cgalParamDescription{receives the chart id of every face}
+///     \cgalParamType{a model of `ReadWritePropertyMap` with `face_descriptor` as key type and `std::size_t` as value type}
+///     \cgalParamDefault{an internal map}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{progress_callback}
+///     \cgalParamDescription{called with the stage (`"segmentation"`, `"parameterization"`, `"packing"`)
+///       and a counter of work done out of a total}
+///     \cgalParamType{`std::function<void(const std::string&, std::size_t, std::size_t)>`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// @return the sizes and times of every stage, and the reports of `parameterize_patches()` and `pack_patches()`
+///
+/// @throws Input_error on a bad mesh or parameter (see the three functions); the maps are not written then.
+template <typename TriangleMesh, typename UVMap, typename NamedParameters = parameters::Default_named_parameters>
+Atlas_report uv_atlas(const TriangleMesh& tm, UVMap uv_map, const NamedParameters& np = parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef typename boost::property_map<TriangleMesh, CGAL::dynamic_face_property_t<std::size_t> >::const_type
+    Default_patch_map;
+
+  CGAL::Real_timer total;
+  total.start();
+  // Packing parameters are checked now, not after the UVs are written.
+  internal::packing_settings(np);
+  Atlas_report report;
+  internal::Progress progress = internal::Progress::from(np);
+
+  Default_patch_map default_patch_map = get(CGAL::dynamic_face_property_t<std::size_t>(), tm);
+  auto face_patch_map = choose_parameter(get_parameter(np, CGAL::internal_np::face_patch), default_patch_map);
+
+  progress("segmentation", 0, 3);
+  {
+    internal::Indexed_triangle_mesh m;
+    std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> face_handles;
+    internal::build_indexed_triangle_mesh(tm, np, m, face_handles);
+    std::vector<internal::Index> labels;
+    const internal::Segmentation_steps steps = internal::segment_indexed(m, face_handles, np, labels);
+    internal::write_face_labels(face_handles, labels, face_patch_map);
+    report.number_of_faces = m.number_of_faces();
+    report.number_of_voronoi_cells = steps.voronoi_cells;
+    report.number_of_refined_regions = steps.refined_regions;
+    report.voronoi_seconds = steps.voronoi_seconds;
+    report.refine_seconds = steps.refine_seconds;
+    report.merge_seconds = steps.merge_seconds;
+  }
+  progress("segmentation", 3, 3);
+
+  CGAL::Real_timer timer;
+  timer.start();
+  report.parameterization = parameterize_patches(tm, face_patch_map, uv_map, np);
+  report.number_of_charts = report.parameterization.charts.size();
+  report.parameterization_seconds = timer.time();
+
+  progress("packing", 0, 1);
+  timer.reset();
+  report.packing = pack_patches(tm, face_patch_map, uv_map, np);
+  report.packing_seconds = timer.time();
+  progress("packing", 1, 1);
+
+  report.total_seconds = total.time();
+  return report;
+}
+
+} // namespace Disk_segmentation
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_DISK_SEGMENTATION_UV_ATLAS_H

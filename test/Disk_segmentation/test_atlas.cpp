@@ -1,0 +1,266 @@
+// Tests of the complete atlas: parameterization of every chart, fallbacks,
+// packing and the files disk_uv writes. Atlases are checked with
+// test_support::check_atlas() (independent_atlas.h), written independently
+// from the library.
+
+#include "independent_atlas.h"
+#include "independent_topology.h"
+#include "test_meshes.h"
+
+#include <CGAL/Disk_segmentation.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace DS = CGAL::Disk_segmentation;
+namespace TS = test_support;
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+typedef Mesh::Property_map<Mesh::Face_index, std::size_t> Patch_map;
+typedef Mesh::Property_map<Mesh::Halfedge_index, K::Point_2> UV_map;
+
+namespace {
+
+std::string data_path(const std::string& name)
+{
+  return std::string(DISK_SEGMENTATION_TEST_DATA_DIR) + "/" + name;
+}
+
+Mesh load(const std::string& name)
+{
+  Mesh tm;
+  if(!CGAL::IO::read_polygon_mesh(data_path(name), tm))
+    throw std::runtime_error("cannot read test mesh " + name);
+  return tm;
+}
+
+Mesh make(const TS::Soup& soup)
+{
+  Mesh tm;
+  TS::to_mesh(soup, tm);
+  return tm;
+}
+
+struct Atlas
+{
+  Patch_map patch;
+  UV_map uv;
+  DS::Atlas_report report;
+};
+
+template <typename NamedParameters>
+Atlas make_atlas(Mesh& tm, const NamedParameters& np)
+{
+  Atlas a;
+  a.patch = tm.add_property_map<Mesh::Face_index, std::size_t>("f:test_patch", 0).first;
+  a.uv = tm.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:test_uv", K::Point_2(0, 0)).first;
+  a.report = DS::uv_atlas(tm, a.uv, np.face_patch_map(a.patch));
+  return a;
+}
+
+void expect_valid_atlas(const Mesh& tm, const Atlas& a)
+{
+  const TS::Partition_report partition = TS::check_disk_partition(tm, a.patch);
+  EXPECT_TRUE(partition.ok) << partition.problem;
+  EXPECT_EQ(partition.number_of_patches, a.report.number_of_charts);
+  const TS::Atlas_report atlas = TS::check_atlas(tm, a.patch, a.uv, 1024);
+  EXPECT_TRUE(atlas.ok()) << atlas.summary();
+  EXPECT_EQ(a.report.parameterization.number_of_invalid_charts, 0u);
+}
+
+const DS::Parameterization_method all_methods[] = {
+  DS::Parameterization_method::DISCRETE_CONFORMAL, DS::Parameterization_method::LSCM,
+  DS::Parameterization_method::ARAP, DS::Parameterization_method::MEAN_VALUE, DS::Parameterization_method::TUTTE };
+
+// A fan of triangles around a border vertex whose 3D angles add up to about
+// 740 degrees: the surface is embedded (zig-zag pleats), but any map that
+// keeps angles must wrap the fan around twice in the plane.
+TS::Soup pleated_fan()
+{
+  TS::Soup s;
+  s.points.push_back({{ 0., 0., 0. }});
+  const int n = 8;
+  for(int i = 0; i <= n; ++i)
+  {
+    const double angle = 3.14159265358979323846 * i / n;
+    s.points.push_back({{ std::cos(angle), std::sin(angle), (i % 2 == 0) ? 1. : -1. }});
+  }
+  for(int i = 0; i < n; ++i)
+    s.triangles.push_back({{ 0, std::size_t(i + 1), std::size_t(i + 2) }});
+  return s;
+}
+
+} // namespace
+
+TEST(Atlas, EveryMethodGivesAValidAtlasOnShippedMeshes)
+{
+  for(const char* name : { "elephant.off", "elephant-with-holes.off", "blobby_3cc.off", "knot1.off",
+                           "bones.off", "eight.off", "couplingdown.off" })
+  {
+    for(DS::Parameterization_method method : all_methods)
+    {
+      SCOPED_TRACE(std::string(name) + " " + DS::to_string(method));
+      Mesh tm = load(name);
+      const Atlas a = make_atlas(tm, DS::parameters::parameterization_method(method));
+      expect_valid_atlas(tm, a);
+      EXPECT_GT(a.report.packing.efficiency, 0.2);
+    }
+  }
+}
+
+TEST(Atlas, GeneratedMeshesGiveValidAtlases)
+{
+  const std::vector<std::pair<const char*, TS::Soup> > meshes = {
+    { "sphere", TS::uv_sphere(16, 24) }, { "torus", TS::torus(40, 16) }, { "genus3", TS::genus_surface(3, 3) },
+    { "cylinder", TS::cylinder(24, 12) }, { "disk", TS::disk(8, 24) }, { "holes", TS::grid_with_holes(30, 30, 6) },
+    { "disconnected", TS::disconnected(5) }, { "triangle", TS::single_triangle() }, { "strip", TS::thin_strip(300) },
+    { "pleated_fan", pleated_fan() } };
+  for(const auto& g : meshes)
+  {
+    SCOPED_TRACE(g.first);
+    Mesh tm = make(g.second);
+    expect_valid_atlas(tm, make_atlas(tm, DS::parameters::default_values()));
+  }
+}
+
+TEST(Atlas, FallbackRepairsAChartThatTheRequestedMethodFlips)
+{
+  Mesh tm = make(pleated_fan());
+  // One patch: the whole fan, a topological disk.
+  Patch_map patch = tm.add_property_map<Mesh::Face_index, std::size_t>("f:patch", 0).first;
+  UV_map uv = tm.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:uv", K::Point_2(0, 0)).first;
+
+  const DS::Parameterization_report without =
+    DS::parameterize_patches(tm, patch, uv, DS::parameters::parameterization_method(DS::Parameterization_method::LSCM)
+                                              .use_fallback(false));
+  ASSERT_EQ(without.charts.size(), 1u);
+  EXPECT_FALSE(without.charts[0].valid);
+  EXPECT_EQ(without.number_of_invalid_charts, 1u);
+  // The independent checker sees the overlap too (the chart wraps over itself).
+  DS::pack_patches(tm, patch, uv);
+  EXPECT_FALSE(TS::check_atlas(tm, patch, uv, 512).ok()) << "LSCM no longer fails here: the test is void";
+
+  const DS::Parameterization_report with =
+    DS::parameterize_patches(tm, patch, uv, DS::parameters::parameterization_method(DS::Parameterization_method::LSCM));
+  ASSERT_EQ(with.charts.size(), 1u);
+  EXPECT_TRUE(with.charts[0].valid);
+  EXPECT_TRUE(with.charts[0].fallback);
+  EXPECT_EQ(with.charts[0].used, DS::Parameterization_method::MEAN_VALUE);
+  EXPECT_FALSE(with.charts[0].problem.empty());
+  EXPECT_EQ(with.number_of_fallbacks, 1u);
+  DS::pack_patches(tm, patch, uv);
+  const TS::Atlas_report atlas = TS::check_atlas(tm, patch, uv, 512);
+  EXPECT_TRUE(atlas.ok()) << atlas.summary();
+}
+
+TEST(Atlas, SameResultForAnyNumberOfThreads)
+{
+  Mesh tm = load("elephant.off");
+  Mesh copy = tm;
+  const Atlas one = make_atlas(tm, DS::parameters::number_of_threads(1u));
+  const Atlas two = make_atlas(copy, DS::parameters::number_of_threads(2u));
+  std::size_t differences = 0;
+  for(Mesh::Halfedge_index h : tm.halfedges())
+    if(!tm.is_border(h) && (one.uv[h] != two.uv[h]))
+      ++differences;
+  EXPECT_EQ(differences, 0u);
+}
+
+TEST(Atlas, TightPackingKeepsOneTexelDensityAndBeatsTheGrid)
+{
+  for(const char* name : { "elephant.off", "elephant-with-holes.off", "bones.off", "couplingdown.off" })
+  {
+    SCOPED_TRACE(name);
+    Mesh tm = load(name);
+    const Atlas tight = make_atlas(tm, DS::parameters::packing_method(DS::Packing_method::TIGHT));
+    const std::vector<double> scales = TS::chart_scales(tm, tight.patch, tight.uv);
+    ASSERT_FALSE(scales.empty());
+    const double lo = *std::min_element(scales.begin(), scales.end());
+    const double hi = *std::max_element(scales.begin(), scales.end());
+    EXPECT_LE(hi / lo, 1.01) << "texel density differs between charts";
+    EXPECT_NEAR(tight.report.packing.efficiency, TS::uv_area_sum(tm, tight.uv), 1e-9);
+
+    Mesh tm2 = load(name);
+    const Atlas grid = make_atlas(tm2, DS::parameters::packing_method(DS::Packing_method::GRID));
+    expect_valid_atlas(tm2, grid);
+    EXPECT_GE(tight.report.packing.efficiency, grid.report.packing.efficiency);
+  }
+}
+
+TEST(Atlas, WorksOnPolyhedron)
+{
+  typedef CGAL::Polyhedron_3<K> Polyhedron;
+  Polyhedron p;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(data_path("knot1.off"), p));
+  auto patch = get(CGAL::dynamic_face_property_t<std::size_t>(), p);
+  auto uv = get(CGAL::dynamic_halfedge_property_t<K::Point_2>(), p);
+  const DS::Atlas_report r = DS::uv_atlas(p, uv, DS::parameters::face_patch_map(patch));
+  EXPECT_EQ(r.parameterization.number_of_invalid_charts, 0u);
+  const TS::Atlas_report atlas = TS::check_atlas(p, patch, uv, 512);
+  EXPECT_TRUE(atlas.ok()) << atlas.summary();
+}
+
+TEST(Atlas, BadParametersAreRejectedBeforeAnythingIsWritten)
+{
+  Mesh tm = load("eight.off");
+  UV_map uv = tm.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:uv", K::Point_2(7, 7)).first;
+  EXPECT_THROW(DS::uv_atlas(tm, uv, DS::parameters::texture_resolution(0u)), DS::Input_error);
+  EXPECT_THROW(DS::uv_atlas(tm, uv, DS::parameters::padding_in_texels(-1.)), DS::Input_error);
+  EXPECT_THROW(DS::uv_atlas(tm, uv, DS::parameters::number_of_seeds(0)), DS::Input_error);
+  for(Mesh::Halfedge_index h : tm.halfedges())
+    ASSERT_EQ(uv[h], K::Point_2(7, 7));
+  EXPECT_THROW(DS::parameterization_method_from_string("harmonic?"), DS::Input_error);
+  EXPECT_EQ(DS::parameterization_method_from_string("arap"), DS::Parameterization_method::ARAP);
+}
+
+TEST(Atlas, ObjWrittenByTheToolReadsBackWithTheSameFacesAndUVs)
+{
+#ifndef DISK_UV_TOOL
+  GTEST_SKIP() << "built without the disk_uv tool";
+#else
+  const std::string obj = std::string(::testing::TempDir()) + "/disk_uv_test_atlas.obj";
+  std::remove(obj.c_str());
+  const std::string command = std::string(DISK_UV_TOOL) + " " + data_path("elephant.off") + " --quiet -o " + obj;
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+
+  TS::Obj_data data;
+  std::string error;
+  ASSERT_TRUE(TS::read_obj(obj, data, error)) << error;
+
+  Mesh tm = load("elephant.off");
+  const Atlas a = make_atlas(tm, DS::parameters::default_values());
+  ASSERT_EQ(data.face_v.size(), tm.number_of_faces());
+  ASSERT_EQ(data.v.size(), tm.number_of_vertices());
+  std::size_t f_index = 0, mismatches = 0, wrong_groups = 0;
+  for(Mesh::Face_index f : tm.faces())
+  {
+    for(Mesh::Halfedge_index h : CGAL::halfedges_around_face(tm.halfedge(f), tm))
+    {
+      // OBJ corners follow the face's vertex order starting anywhere: find it.
+      const std::size_t v = std::size_t(tm.target(h));
+      bool found = false;
+      for(int j = 0; j < 3; ++j)
+        if(data.face_v[f_index][j] == v)
+        {
+          const auto& t = data.vt[data.face_vt[f_index][j]];
+          found = std::abs(t[0] - a.uv[h].x()) < 1e-12 && std::abs(t[1] - a.uv[h].y()) < 1e-12;
+        }
+      mismatches += found ? 0 : 1;
+    }
+    wrong_groups += (data.face_group[f_index] == "chart_" + std::to_string(a.patch[f])) ? 0 : 1;
+    ++f_index;
+  }
+  EXPECT_EQ(mismatches, 0u);
+  EXPECT_EQ(wrong_groups, 0u) << "faces must be grouped by chart";
+  std::remove(obj.c_str());
+#endif
+}

@@ -1,0 +1,652 @@
+// Tests of pack_patches(). Meshes, patch partitions and input UVs are made
+// here, and every property of the result is checked with code written here,
+// not with the packer's helpers.
+
+#include "test_meshes.h"
+
+#include <CGAL/Disk_segmentation/pack_patches.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <boost/property_map/property_map.hpp>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <complex>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <vector>
+
+namespace DS = CGAL::Disk_segmentation;
+namespace TS = test_support;
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_2 Point_2;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+typedef CGAL::Polyhedron_3<K> Polyhedron;
+typedef boost::graph_traits<Mesh>::face_descriptor face_descriptor;
+typedef boost::graph_traits<Mesh>::halfedge_descriptor halfedge_descriptor;
+typedef Mesh::Property_map<face_descriptor, std::size_t> Patch_map;
+typedef Mesh::Property_map<halfedge_descriptor, Point_2> UV_map;
+
+namespace {
+
+const double pi = 3.14159265358979323846;
+
+typedef std::array<double, 3> Vec3;
+
+Vec3 sub(const Vec3& a, const Vec3& b) { return {{ a[0] - b[0], a[1] - b[1], a[2] - b[2] }}; }
+Vec3 cross3(const Vec3& a, const Vec3& b)
+{
+  return {{ a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] }};
+}
+double dot3(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+double norm3(const Vec3& a) { return std::sqrt(dot3(a, a)); }
+
+Vec3 point3(const Mesh& m, Mesh::Vertex_index v)
+{
+  const K::Point_3& p = m.point(v);
+  return {{ p.x(), p.y(), p.z() }};
+}
+
+double signed_area(const Point_2& a, const Point_2& b, const Point_2& c)
+{
+  return 0.5 * ((b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x()));
+}
+
+// A test case: a mesh, a partition into patches and per-corner UVs that are,
+// per patch, a planar projection moved by an arbitrary similarity.
+struct Case
+{
+  Mesh mesh;
+  Patch_map patch;
+  UV_map uv;
+  std::size_t number_of_patches = 0;
+  bool isometric_uv = false;  // input UVs are similar to the (planar) 3D patches
+};
+
+void init_maps(Case& c)
+{
+  c.patch = c.mesh.add_property_map<face_descriptor, std::size_t>("f:patch", 0).first;
+  c.uv = c.mesh.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(0, 0)).first;
+}
+
+Vec3 centroid(const Mesh& m, face_descriptor f)
+{
+  Vec3 c = {{ 0., 0., 0. }};
+  for(auto v : CGAL::vertices_around_face(m.halfedge(f), m))
+  {
+    const Vec3 p = point3(m, v);
+    for(std::size_t i = 0; i < 3; ++i) c[i] += p[i] / 3.;
+  }
+  return c;
+}
+
+// UVs of every patch: projection onto the plane orthogonal to the patch's
+// mean normal (kept counterclockwise), then an arbitrary similarity of the
+// patch's own.
+void make_projected_uvs(Case& c)
+{
+  std::vector<Vec3> normal(c.number_of_patches, Vec3{{ 0., 0., 0. }});
+  for(face_descriptor f : faces(c.mesh))
+  {
+    const halfedge_descriptor h = c.mesh.halfedge(f);
+    const Vec3 a = point3(c.mesh, c.mesh.source(h));
+    const Vec3 b = point3(c.mesh, c.mesh.target(h));
+    const Vec3 d = point3(c.mesh, c.mesh.target(c.mesh.next(h)));
+    const Vec3 n = cross3(sub(b, a), sub(d, a));
+    for(std::size_t i = 0; i < 3; ++i) normal[c.patch[f]][i] += n[i];
+  }
+  for(face_descriptor f : faces(c.mesh))
+  {
+    const std::size_t p = c.patch[f];
+    Vec3 n = normal[p];
+    const double ln = norm3(n);
+    for(double& x : n) x /= ln;
+    // e1, e2, n right-handed: a counterclockwise face seen from n stays so.
+    const Vec3 helper = std::abs(n[0]) < 0.9 ? Vec3{{ 1., 0., 0. }} : Vec3{{ 0., 1., 0. }};
+    Vec3 e1 = cross3(helper, n);
+    const double l1 = norm3(e1);
+    for(double& x : e1) x /= l1;
+    const Vec3 e2 = cross3(n, e1);
+
+    const double angle = 0.7 * double(p) + 0.3;
+    const double scale = 0.5 + 0.37 * double(p % 7);
+    const double tx = 1.3 * double(p) - 5., ty = 3. - 0.7 * double(p);
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(c.mesh.halfedge(f), c.mesh))
+    {
+      const Vec3 q = point3(c.mesh, c.mesh.target(h));
+      const double x = dot3(q, e1), y = dot3(q, e2);
+      c.uv[h] = Point_2(scale * (std::cos(angle) * x - std::sin(angle) * y) + tx,
+                        scale * (std::sin(angle) * x + std::cos(angle) * y) + ty);
+    }
+  }
+}
+
+// Planar grid cut into blocks of varied widths and heights.
+Case grid_case(const std::vector<int>& x_cuts, const std::vector<int>& y_cuts)
+{
+  Case c;
+  TS::to_mesh(TS::grid_with_holes(x_cuts.back(), y_cuts.back(), 0), c.mesh);
+  init_maps(c);
+  const std::size_t columns = x_cuts.size() - 1;
+  for(face_descriptor f : faces(c.mesh))
+  {
+    const Vec3 g = centroid(c.mesh, f);
+    const std::size_t i = std::size_t(std::upper_bound(x_cuts.begin(), x_cuts.end(), g[0]) - x_cuts.begin()) - 1;
+    const std::size_t j = std::size_t(std::upper_bound(y_cuts.begin(), y_cuts.end(), g[1]) - y_cuts.begin()) - 1;
+    c.patch[f] = j * columns + i;
+  }
+  c.number_of_patches = columns * (y_cuts.size() - 1);
+  c.isometric_uv = true;
+  make_projected_uvs(c);
+  return c;
+}
+
+Case varied_grid_case()
+{
+  return grid_case({ 0, 1, 3, 6, 10, 15, 21, 28, 36 }, { 0, 2, 3, 7, 8, 13, 14, 20 });
+}
+
+// Planar disk cut into sectors of the inner rings and thinner sectors of the outer ones.
+Case disk_case()
+{
+  Case c;
+  TS::to_mesh(TS::disk(8, 24), c.mesh);
+  init_maps(c);
+  for(face_descriptor f : faces(c.mesh))
+  {
+    const Vec3 g = centroid(c.mesh, f);
+    const double r = std::sqrt(g[0] * g[0] + g[1] * g[1]);
+    double a = std::atan2(g[1], g[0]);
+    if(a < 0.) a += 2. * pi;
+    if(r < 0.5)
+      c.patch[f] = std::size_t(a / (2. * pi) * 3.);
+    else
+      c.patch[f] = 3 + std::size_t(a / (2. * pi) * 8.);
+  }
+  c.number_of_patches = 11;
+  c.isometric_uv = true;
+  make_projected_uvs(c);
+  return c;
+}
+
+// Sphere cut into latitude bands and longitude sectors (curved patches).
+Case sphere_case()
+{
+  Case c;
+  TS::to_mesh(TS::uv_sphere(12, 24), c.mesh);
+  init_maps(c);
+  for(face_descriptor f : faces(c.mesh))
+  {
+    const Vec3 g = centroid(c.mesh, f);
+    const double theta = std::acos(g[2] / norm3(g));
+    double phi = std::atan2(g[1], g[0]);
+    if(phi < 0.) phi += 2. * pi;
+    const std::size_t band = std::min<std::size_t>(3, std::size_t(theta / pi * 4.));
+    const std::size_t sector = std::min<std::size_t>(5, std::size_t(phi / (2. * pi) * 6.));
+    c.patch[f] = band * 6 + sector;
+  }
+  c.number_of_patches = 24;
+  make_projected_uvs(c);
+  return c;
+}
+
+// Torus cut into three bands around the tube and sectors of varied widths
+// around the axis: many curved charts of varied sizes.
+Case torus_case()
+{
+  Case c;
+  TS::to_mesh(TS::torus(60, 18), c.mesh);
+  init_maps(c);
+  const std::vector<double> cuts = { 0, 2, 5, 6, 10, 13, 14, 17, 22, 23, 26, 30, 31, 35, 40, 41, 45, 47, 52, 56, 60 };
+  for(face_descriptor f : faces(c.mesh))
+  {
+    const Vec3 g = centroid(c.mesh, f);
+    double phi = std::atan2(g[1], g[0]);
+    if(phi < 0.) phi += 2. * pi;
+    double theta = std::atan2(g[2], std::sqrt(g[0] * g[0] + g[1] * g[1]) - 1.);
+    if(theta < 0.) theta += 2. * pi;
+    const double slot = phi / (2. * pi) * 60.;
+    const std::size_t sector = std::size_t(std::upper_bound(cuts.begin(), cuts.end(), slot) - cuts.begin()) - 1;
+    const std::size_t band = std::min<std::size_t>(2, std::size_t(theta / (2. * pi) * 3.));
+    c.patch[f] = band * (cuts.size() - 1) + sector;
+  }
+  c.number_of_patches = 3 * (cuts.size() - 1);
+  make_projected_uvs(c);
+  return c;
+}
+
+// Every face its own chart.
+Case single_face_case(int nx, int ny)
+{
+  Case c;
+  TS::to_mesh(TS::grid_with_holes(nx, ny, 0), c.mesh);
+  init_maps(c);
+  std::size_t i = 0;
+  for(face_descriptor f : faces(c.mesh))
+    c.patch[f] = i++;
+  c.number_of_patches = i;
+  c.isometric_uv = true;
+  make_projected_uvs(c);
+  return c;
+}
+
+std::vector<Point_2> snapshot(const Case& c)
+{
+  std::vector<Point_2> uv(c.mesh.number_of_halfedges(), Point_2(0, 0));
+  for(face_descriptor f : faces(c.mesh))
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(c.mesh.halfedge(f), c.mesh))
+      uv[h.idx()] = c.uv[h];
+  return uv;
+}
+
+struct Box
+{
+  double xmin = std::numeric_limits<double>::max(), ymin = std::numeric_limits<double>::max();
+  double xmax = -std::numeric_limits<double>::max(), ymax = -std::numeric_limits<double>::max();
+};
+
+// Checks everything pack_patches promises, from the input and output UVs.
+void check_packing(const Case& c, const std::vector<Point_2>& before, const DS::Packing_report& report,
+                   DS::Packing_method method, double resolution, double padding_in_texels)
+{
+  const Mesh& m = c.mesh;
+  const std::size_t P = c.number_of_patches;
+  ASSERT_EQ(report.number_of_charts, P);
+  const double pad = padding_in_texels / resolution;
+  const double eps = 1e-9;
+
+  std::vector<std::vector<halfedge_descriptor> > corners(P);
+  std::vector<double> uv_area(P, 0.), area3(P, 0.);
+  std::vector<Box> box(P);
+  double total_uv_area = 0.;
+  for(face_descriptor f : faces(m))
+  {
+    const std::size_t p = c.patch[f];
+    std::vector<Point_2> q;
+    std::vector<Vec3> x;
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(m.halfedge(f), m))
+    {
+      const Point_2& u = c.uv[h];
+      ASSERT_TRUE(std::isfinite(u.x()) && std::isfinite(u.y()));
+      ASSERT_GE(u.x(), 0.); ASSERT_LE(u.x(), 1.);
+      ASSERT_GE(u.y(), 0.); ASSERT_LE(u.y(), 1.);
+      q.push_back(u);
+      x.push_back(point3(m, m.target(h)));
+      corners[p].push_back(h);
+      box[p].xmin = std::min(box[p].xmin, u.x()); box[p].xmax = std::max(box[p].xmax, u.x());
+      box[p].ymin = std::min(box[p].ymin, u.y()); box[p].ymax = std::max(box[p].ymax, u.y());
+    }
+    const double a = signed_area(q[0], q[1], q[2]);
+    EXPECT_GT(a, 0.) << "face lost its counterclockwise orientation";
+    uv_area[p] += a;
+    total_uv_area += a;
+    area3[p] += 0.5 * norm3(cross3(sub(x[1], x[0]), sub(x[2], x[0])));
+  }
+  EXPECT_NEAR(report.efficiency, total_uv_area, 1e-9 * std::max(1., total_uv_area));
+  EXPECT_GT(report.efficiency, 0.);
+  EXPECT_LE(report.efficiency, 1.);
+
+  // One direct similarity per chart: z' = a z + b with complex a. A
+  // reflection would need conj(z), so a small residual of this fit means
+  // scale, rotation and translation only, and all distance ratios equal |a|.
+  std::vector<double> chart_scale(P);
+  for(std::size_t p = 0; p < P; ++p)
+  {
+    ASSERT_FALSE(corners[p].empty());
+    const std::size_t h0 = corners[p][0].idx();
+    std::size_t far = h0;
+    for(halfedge_descriptor h : corners[p])
+      if(CGAL::squared_distance(before[h.idx()], before[h0]) > CGAL::squared_distance(before[far], before[h0]))
+        far = h.idx();
+    const std::complex<double> z0(before[h0].x(), before[h0].y()), z1(before[far].x(), before[far].y());
+    const halfedge_descriptor g0 = corners[p][0];
+    halfedge_descriptor g1 = g0;
+    for(halfedge_descriptor h : corners[p]) if(h.idx() == far) g1 = h;
+    const std::complex<double> w0(c.uv[g0].x(), c.uv[g0].y()), w1(c.uv[g1].x(), c.uv[g1].y());
+    const std::complex<double> a = (w1 - w0) / (z1 - z0);
+    const std::complex<double> b = w0 - a * z0;
+    const double size = std::abs(w1 - w0);
+    for(halfedge_descriptor h : corners[p])
+    {
+      const std::complex<double> z(before[h.idx()].x(), before[h.idx()].y());
+      const std::complex<double> w(c.uv[h].x(), c.uv[h].y());
+      ASSERT_LT(std::abs(a * z + b - w), 1e-9 * std::max(size, 1e-3)) << "chart " << p << " is not a similar copy";
+    }
+    chart_scale[p] = std::sqrt(uv_area[p] / area3[p]);
+
+    // Planar charts given isometric UVs: every edge has the same UV / 3D ratio.
+    if(c.isometric_uv)
+      for(halfedge_descriptor h : corners[p])
+      {
+        const halfedge_descriptor n = m.next(h);
+        const double l3 = norm3(sub(point3(m, m.target(n)), point3(m, m.target(h))));
+        const double luv = std::sqrt(CGAL::squared_distance(c.uv[n], c.uv[h]));
+        ASSERT_NEAR(luv / l3, chart_scale[p], 1e-7 * chart_scale[p]);
+      }
+  }
+
+  // Bounding boxes: inside the square with the padding, and pairwise apart.
+  for(std::size_t p = 0; p < P; ++p)
+  {
+    EXPECT_GE(box[p].xmin, pad - eps); EXPECT_GE(box[p].ymin, pad - eps);
+    EXPECT_LE(box[p].xmax, 1. - pad + eps); EXPECT_LE(box[p].ymax, 1. - pad + eps);
+    for(std::size_t q = p + 1; q < P; ++q)
+    {
+      const double gap_x = std::max(box[q].xmin - box[p].xmax, box[p].xmin - box[q].xmax);
+      const double gap_y = std::max(box[q].ymin - box[p].ymax, box[p].ymin - box[q].ymax);
+      ASSERT_GE(std::max(gap_x, gap_y), pad - eps) << "charts " << p << " and " << q << " are too close";
+    }
+  }
+
+  if(method == DS::Packing_method::TIGHT)
+  {
+    const double lo = *std::min_element(chart_scale.begin(), chart_scale.end());
+    const double hi = *std::max_element(chart_scale.begin(), chart_scale.end());
+    EXPECT_LE(hi, 1.01 * lo) << "texel density differs between charts";
+    for(double s : chart_scale)
+      EXPECT_NEAR(s * resolution, report.texels_per_unit, 1e-6 * report.texels_per_unit);
+  }
+  else
+  {
+    EXPECT_EQ(report.texels_per_unit, 0.);
+  }
+}
+
+DS::Packing_report pack_and_check(Case& c, DS::Packing_method method, unsigned resolution = 1024,
+                                  double padding = 2.)
+{
+  const std::vector<Point_2> before = snapshot(c);
+  for(face_descriptor f : faces(c.mesh))
+  {
+    std::vector<Point_2> q;
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(c.mesh.halfedge(f), c.mesh))
+      q.push_back(c.uv[h]);
+    EXPECT_GT(signed_area(q[0], q[1], q[2]), 0.) << "test input is not counterclockwise";
+  }
+  const DS::Packing_report report =
+    DS::pack_patches(c.mesh, c.patch, c.uv,
+                     DS::parameters::packing_method(method).texture_resolution(resolution).padding_in_texels(padding));
+  check_packing(c, before, report, method, double(resolution), padding);
+  return report;
+}
+
+const char* name(DS::Packing_method m) { return m == DS::Packing_method::TIGHT ? "TIGHT" : "GRID"; }
+
+} // namespace
+
+TEST(Packing, VariedGridBothMethods)
+{
+  double efficiency[2];
+  int k = 0;
+  for(DS::Packing_method method : { DS::Packing_method::TIGHT, DS::Packing_method::GRID })
+  {
+    Case c = varied_grid_case();
+    const DS::Packing_report r = pack_and_check(c, method);
+    std::cout << "[ varied grid, " << c.number_of_patches << " charts ] " << name(method)
+              << " efficiency " << r.efficiency << std::endl;
+    efficiency[k++] = r.efficiency;
+  }
+  EXPECT_GE(efficiency[0], efficiency[1]);
+}
+
+TEST(Packing, DiskAndSphereBothMethods)
+{
+  for(DS::Packing_method method : { DS::Packing_method::TIGHT, DS::Packing_method::GRID })
+  {
+    Case d = disk_case();
+    const DS::Packing_report rd = pack_and_check(d, method);
+    Case s = sphere_case();
+    const DS::Packing_report rs = pack_and_check(s, method, 512, 3.5);
+    std::cout << "[ disk, 11 charts ] " << name(method) << " efficiency " << rd.efficiency << std::endl;
+    std::cout << "[ sphere, 24 charts ] " << name(method) << " efficiency " << rs.efficiency << std::endl;
+  }
+}
+
+TEST(Packing, ManySmallChartsTightBeatsGrid)
+{
+  double efficiency[2];
+  int k = 0;
+  for(DS::Packing_method method : { DS::Packing_method::TIGHT, DS::Packing_method::GRID })
+  {
+    // 3 x 3 blocks of varied size next to a field of single squares.
+    std::vector<int> cuts;
+    for(int x = 0; x <= 12; ++x) cuts.push_back(x);
+    cuts.push_back(17);
+    cuts.push_back(25);
+    cuts.push_back(36);
+    Case c = grid_case(cuts, cuts);
+    const DS::Packing_report r = pack_and_check(c, method, 2048, 1.);
+    std::cout << "[ mixed grid, " << c.number_of_patches << " charts ] " << name(method)
+              << " efficiency " << r.efficiency << std::endl;
+    efficiency[k++] = r.efficiency;
+  }
+  EXPECT_GT(efficiency[0], efficiency[1]);
+}
+
+TEST(Packing, TorusBothMethods)
+{
+  double efficiency[2];
+  int k = 0;
+  for(DS::Packing_method method : { DS::Packing_method::TIGHT, DS::Packing_method::GRID })
+  {
+    Case c = torus_case();
+    const DS::Packing_report r = pack_and_check(c, method, 4096, 2.);
+    std::cout << "[ torus, " << c.number_of_patches << " charts ] " << name(method)
+              << " efficiency " << r.efficiency << std::endl;
+    efficiency[k++] = r.efficiency;
+  }
+  EXPECT_GE(efficiency[0], efficiency[1]);
+}
+
+TEST(Packing, SingleFaceChartsAndZeroPadding)
+{
+  for(DS::Packing_method method : { DS::Packing_method::TIGHT, DS::Packing_method::GRID })
+  {
+    Case c = single_face_case(7, 5);
+    pack_and_check(c, method, 256, 0.);
+    Case one = single_face_case(1, 1);
+    pack_and_check(one, method, 64, 4.);
+  }
+}
+
+TEST(Packing, OneChartFillsTheSquareWidth)
+{
+  Case c = grid_case({ 0, 6 }, { 0, 2 });
+  const DS::Packing_report r = pack_and_check(c, DS::Packing_method::TIGHT, 1000, 10.);
+  // A 6 x 2 rectangle laid horizontally fills the width less the padding.
+  EXPECT_NEAR(r.efficiency, (0.98 * 0.98) / 3., 1e-6);
+}
+
+TEST(Packing, DefaultIsTightAndDeterministic)
+{
+  Case a = sphere_case(), b = sphere_case();
+  const DS::Packing_report ra = DS::pack_patches(a.mesh, a.patch, a.uv);
+  const DS::Packing_report rb =
+    DS::pack_patches(b.mesh, b.patch, b.uv, DS::parameters::packing_method(DS::Packing_method::TIGHT));
+  EXPECT_EQ(ra.efficiency, rb.efficiency);
+  EXPECT_GT(ra.texels_per_unit, 0.);
+  for(face_descriptor f : faces(a.mesh))
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(a.mesh.halfedge(f), a.mesh))
+      ASSERT_EQ(a.uv[h], b.uv[h]);
+}
+
+TEST(Packing, PolyhedronGivesTheSameAtlas)
+{
+  for(DS::Packing_method method : { DS::Packing_method::TIGHT, DS::Packing_method::GRID })
+  {
+    Case c = disk_case();
+    Polyhedron poly;
+    TS::to_mesh(TS::disk(8, 24), poly);
+    typedef boost::graph_traits<Polyhedron>::face_descriptor pface;
+    typedef boost::graph_traits<Polyhedron>::halfedge_descriptor phalfedge;
+    std::map<pface, std::size_t> patch_storage;
+    std::map<phalfedge, Point_2> uv_storage;
+    // Faces and vertices come in the same order in both meshes; match corners by target vertex index.
+    std::map<boost::graph_traits<Polyhedron>::vertex_descriptor, std::size_t> vindex;
+    for(auto v : vertices(poly)) vindex.emplace(v, vindex.size());
+    auto fp = faces(poly).begin();
+    for(face_descriptor f : faces(c.mesh))
+    {
+      patch_storage[*fp] = c.patch[f];
+      for(phalfedge ph : CGAL::halfedges_around_face(halfedge(*fp, poly), poly))
+        for(halfedge_descriptor h : CGAL::halfedges_around_face(c.mesh.halfedge(f), c.mesh))
+          if(std::size_t(c.mesh.target(h).idx()) == vindex[target(ph, poly)])
+            uv_storage[ph] = c.uv[h];
+      ++fp;
+    }
+    const auto np = DS::parameters::packing_method(method);
+    const DS::Packing_report rm = DS::pack_patches(c.mesh, c.patch, c.uv, np);
+    const DS::Packing_report rp = DS::pack_patches(poly, boost::make_assoc_property_map(patch_storage),
+                                                   boost::make_assoc_property_map(uv_storage), np);
+    EXPECT_EQ(rm.number_of_charts, rp.number_of_charts);
+    EXPECT_NEAR(rm.efficiency, rp.efficiency, 1e-12);
+    fp = faces(poly).begin();
+    for(face_descriptor f : faces(c.mesh))
+    {
+      for(phalfedge ph : CGAL::halfedges_around_face(halfedge(*fp, poly), poly))
+        for(halfedge_descriptor h : CGAL::halfedges_around_face(c.mesh.halfedge(f), c.mesh))
+          if(std::size_t(c.mesh.target(h).idx()) == vindex[target(ph, poly)])
+          {
+            EXPECT_NEAR(uv_storage[ph].x(), c.uv[h].x(), 1e-12);
+            EXPECT_NEAR(uv_storage[ph].y(), c.uv[h].y(), 1e-12);
+          }
+      ++fp;
+    }
+  }
+}
+
+TEST(Packing, EmptyMeshGivesNoChart)
+{
+  Mesh m;
+  auto patch = m.add_property_map<face_descriptor, std::size_t>("f:patch", 0).first;
+  auto uv = m.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(0, 0)).first;
+  const DS::Packing_report r = DS::pack_patches(m, patch, uv);
+  EXPECT_EQ(r.number_of_charts, 0u);
+  EXPECT_EQ(r.efficiency, 0.);
+}
+
+TEST(Packing, BadParametersThrow)
+{
+  Case c = disk_case();
+  const std::vector<Point_2> before = snapshot(c);
+  auto unchanged = [&]()
+  {
+    for(face_descriptor f : faces(c.mesh))
+      for(halfedge_descriptor h : CGAL::halfedges_around_face(c.mesh.halfedge(f), c.mesh))
+        if(c.uv[h] != before[h.idx()]) return false;
+    return true;
+  };
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(DS::pack_patches(c.mesh, c.patch, c.uv, DS::parameters::texture_resolution(0u)), DS::Input_error);
+  EXPECT_THROW(DS::pack_patches(c.mesh, c.patch, c.uv, DS::parameters::texture_resolution(-5)), DS::Input_error);
+  EXPECT_THROW(DS::pack_patches(c.mesh, c.patch, c.uv, DS::parameters::padding_in_texels(-1.)), DS::Input_error);
+  EXPECT_THROW(DS::pack_patches(c.mesh, c.patch, c.uv, DS::parameters::padding_in_texels(nan)), DS::Input_error);
+  EXPECT_THROW(DS::pack_patches(c.mesh, c.patch, c.uv, DS::parameters::padding_in_texels(inf)), DS::Input_error);
+  EXPECT_THROW(DS::pack_patches(c.mesh, c.patch, c.uv,
+                                DS::parameters::texture_resolution(64u).padding_in_texels(32.)),
+               DS::Input_error);
+  EXPECT_THROW(DS::pack_patches(c.mesh, c.patch, c.uv,
+                                DS::parameters::packing_method(static_cast<DS::Packing_method>(7))),
+               DS::Input_error);
+  try
+  {
+    DS::pack_patches(c.mesh, c.patch, c.uv, DS::parameters::padding_in_texels(-1.));
+  }
+  catch(const DS::Input_error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("padding_in_texels"), std::string::npos);
+  }
+  try
+  {
+    DS::pack_patches(c.mesh, c.patch, c.uv, DS::parameters::texture_resolution(0u));
+  }
+  catch(const DS::Input_error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("texture_resolution"), std::string::npos);
+  }
+  EXPECT_TRUE(unchanged());
+}
+
+TEST(Packing, NonTriangleFaceThrows)
+{
+  Mesh m;
+  const auto a = m.add_vertex(K::Point_3(0, 0, 0)), b = m.add_vertex(K::Point_3(1, 0, 0));
+  const auto d = m.add_vertex(K::Point_3(1, 1, 0)), e = m.add_vertex(K::Point_3(0, 1, 0));
+  const face_descriptor f = m.add_face(a, b, d, e);
+  ASSERT_NE(f, Mesh::null_face());
+  auto patch = m.add_property_map<face_descriptor, std::size_t>("f:patch", 0).first;
+  auto uv = m.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(0, 0)).first;
+  for(halfedge_descriptor h : CGAL::halfedges_around_face(m.halfedge(f), m))
+    uv[h] = Point_2(m.point(m.target(h)).x(), m.point(m.target(h)).y());
+  EXPECT_THROW(DS::pack_patches(m, patch, uv), DS::Input_error);
+}
+
+TEST(Packing, PaddingTooLargeForTheChartsThrows)
+{
+  // 800 single-triangle charts cannot be 1 texel apart on a 16 x 16 texture.
+  for(DS::Packing_method method : { DS::Packing_method::TIGHT, DS::Packing_method::GRID })
+  {
+    Case c = single_face_case(20, 20);
+    EXPECT_THROW(DS::pack_patches(c.mesh, c.patch, c.uv,
+                                  DS::parameters::packing_method(method).texture_resolution(16u).padding_in_texels(1.)),
+                 DS::Input_error);
+  }
+}
+
+TEST(Packing, DegeneratePatchesThrow)
+{
+  for(DS::Packing_method method : { DS::Packing_method::TIGHT, DS::Packing_method::GRID })
+  {
+    const auto np = DS::parameters::packing_method(method);
+    {
+      // Patch 4 collapsed to a point.
+      Case c = disk_case();
+      for(face_descriptor f : faces(c.mesh))
+        if(c.patch[f] == 4)
+          for(halfedge_descriptor h : CGAL::halfedges_around_face(c.mesh.halfedge(f), c.mesh))
+            c.uv[h] = Point_2(1, 2);
+      try
+      {
+        DS::pack_patches(c.mesh, c.patch, c.uv, np);
+        ADD_FAILURE() << "no exception";
+      }
+      catch(const DS::Input_error& e)
+      {
+        EXPECT_NE(std::string(e.what()).find("patch #4"), std::string::npos) << e.what();
+      }
+    }
+    {
+      // A NaN UV in patch 2.
+      Case c = disk_case();
+      for(face_descriptor f : faces(c.mesh))
+        if(c.patch[f] == 2)
+        {
+          c.uv[c.mesh.halfedge(f)] = Point_2(std::numeric_limits<double>::quiet_NaN(), 0.);
+          break;
+        }
+      try
+      {
+        DS::pack_patches(c.mesh, c.patch, c.uv, np);
+        ADD_FAILURE() << "no exception";
+      }
+      catch(const DS::Input_error& e)
+      {
+        EXPECT_NE(std::string(e.what()).find("patch #2"), std::string::npos) << e.what();
+      }
+    }
+    {
+      // Ids not contiguous: no face in patch 11, one face in patch 12.
+      Case c = disk_case();
+      c.patch[*faces(c.mesh).begin()] = 12;
+      EXPECT_THROW(DS::pack_patches(c.mesh, c.patch, c.uv, np), DS::Input_error);
+    }
+  }
+}
