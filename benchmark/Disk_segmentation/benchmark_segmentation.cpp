@@ -22,11 +22,7 @@
 //   --mesh=FILE       base mesh instead of the test data's elephant.off
 //   --max_level=L     largest subdivision level to register (default 4)
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
-#include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
-#include <CGAL/Surface_mesh.h>
-#include <CGAL/boost/graph/helpers.h>
+#include "benchmark_meshes.h"
 
 #include <CGAL/Disk_segmentation/merge_disk_regions.h>
 #include <CGAL/Disk_segmentation/refine_to_topological_disks.h>
@@ -35,36 +31,28 @@
 
 #include <benchmark/benchmark.h>
 
-#include <boost/property_map/property_map.hpp>
-
 #include <algorithm>
 #include <cstdint>
-#include <cstdlib>
-#include <iostream>
 #include <map>
 #include <memory>
-#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
-
-#ifndef DISK_SEGMENTATION_BENCHMARK_DATA_DIR
-#define DISK_SEGMENTATION_BENCHMARK_DATA_DIR "."
-#endif
 
 namespace {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+using namespace Disk_segmentation_benchmark;
 
 namespace DS = CGAL::Disk_segmentation;
 
-std::string base_mesh_file = std::string(DISK_SEGMENTATION_BENCHMARK_DATA_DIR) + "/elephant.off";
-
-// One subdivision level of the base mesh, with the intermediate results the
-// later steps start from (filled on demand).
+// One subdivision level of the base mesh (from the shared cache of
+// benchmark_meshes.h), with the intermediate results the later steps start
+// from (filled on demand).
 struct Level
 {
-  Mesh mesh;
+  explicit Level(const Mesh_level& base) : mesh(base.mesh), faces(base.faces) {}
+
+  const Mesh& mesh;
   std::size_t faces = 0;
 
   bool has_voronoi = false;
@@ -76,44 +64,12 @@ struct Level
   std::size_t refined_patches = 0;
 };
 
-// Writable property map face -> std::size_t stored in `labels` (face index).
-typedef boost::iterator_property_map<std::vector<std::size_t>::iterator,
-                                     boost::property_map<Mesh, boost::face_index_t>::const_type>
-  Patch_map;
-
-Patch_map patch_map(const Mesh& mesh, std::vector<std::size_t>& labels)
-{
-  return Patch_map(labels.begin(), get(boost::face_index, mesh));
-}
-
-Mesh read_base_mesh()
-{
-  Mesh mesh;
-  if(!CGAL::IO::read_polygon_mesh(base_mesh_file, mesh) || is_empty(mesh) || !CGAL::is_triangle_mesh(mesh))
-    throw std::runtime_error("cannot read a triangle mesh from " + base_mesh_file);
-  return mesh;
-}
-
-// The static cache: level L is level L-1 after one Loop subdivision step.
 Level& level(int L)
 {
   static std::map<int, std::unique_ptr<Level> > cache;
   std::unique_ptr<Level>& slot = cache[L];
   if(!slot)
-  {
-    std::unique_ptr<Level> data(new Level);
-    if(L == 0)
-      data->mesh = read_base_mesh();
-    else
-    {
-      data->mesh = level(L - 1).mesh;
-      CGAL::Subdivision_method_3::Loop_subdivision(data->mesh, CGAL::parameters::number_of_iterations(1));
-    }
-    if(data->mesh.has_garbage())
-      data->mesh.collect_garbage();
-    data->faces = num_faces(data->mesh);
-    slot = std::move(data);
-  }
+    slot.reset(new Level(mesh_level(L)));
   return *slot;
 }
 
@@ -217,13 +173,6 @@ void BM_segment(benchmark::State& state, int L)
   finish(state, d, patches);
 }
 
-// The fastest repetition, reported next to the mean/median/stddev/cv
-// aggregates when --benchmark_repetitions is above 1.
-double minimum(const std::vector<double>& v)
-{
-  return v.empty() ? 0. : *std::min_element(v.begin(), v.end());
-}
-
 // Small meshes run for a minimum time; the large ones a fixed, small number
 // of iterations, so that the whole suite stays within a few minutes on two
 // cores.
@@ -239,54 +188,15 @@ void apply_run_policy(benchmark::internal::Benchmark* b, std::size_t faces)
     b->Iterations(2);
 }
 
-// Removes "--name=value" from argv and returns value ("" when absent).
-std::string take_option(int& argc, char** argv, const std::string& name)
-{
-  const std::string prefix = "--" + name + "=";
-  std::string value;
-  int out = 1;
-  for(int i = 1; i < argc; ++i)
-  {
-    const std::string arg = argv[i];
-    if(arg.compare(0, prefix.size(), prefix) == 0)
-      value = arg.substr(prefix.size());
-    else
-      argv[out++] = argv[i];
-  }
-  argc = out;
-  return value;
-}
-
 } // namespace
 
 int main(int argc, char** argv)
 {
   benchmark::Initialize(&argc, argv);
 
-  const std::string mesh_option = take_option(argc, argv, "mesh");
-  const std::string level_option = take_option(argc, argv, "max_level");
-  if(benchmark::ReportUnrecognizedArguments(argc, argv))
-    return 1;
-  if(!mesh_option.empty())
-    base_mesh_file = mesh_option;
-  const int max_level = level_option.empty() ? 4 : std::atoi(level_option.c_str());
-
-  // Face counts name the benchmarks; a closed triangle mesh has exactly four
-  // times as many faces after each Loop step.
-  std::size_t base_faces = 0;
-  try
-  {
-    base_faces = level(0).faces;
-  }
-  catch(const std::exception& e)
-  {
-    std::cerr << "benchmark_segmentation: " << e.what() << std::endl;
-    return 1;
-  }
-
   std::vector<std::pair<int, std::size_t> > sizes;
-  for(int L = 0; L <= max_level; ++L)
-    sizes.push_back(std::make_pair(L, base_faces << (2 * L)));
+  if(!mesh_sizes(argc, argv, "benchmark_segmentation", sizes))
+    return 1;
 
   for(const auto& s : sizes)
     for(std::size_t seeds : { std::size_t(10), std::size_t(100) })
