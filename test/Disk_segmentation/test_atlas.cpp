@@ -196,6 +196,47 @@ TEST(Atlas, TightPackingKeepsOneTexelDensityAndBeatsTheGrid)
   }
 }
 
+namespace {
+
+// Multiplies every coordinate by 2^exponent: exact, so results must not change.
+struct Power_of_two_scaled_points
+{
+  typedef Mesh::Vertex_index key_type;
+  typedef K::Point_3 value_type;
+  typedef value_type reference;
+  typedef boost::readable_property_map_tag category;
+  const Mesh* mesh;
+  int exponent;
+  friend value_type get(const Power_of_two_scaled_points& m, key_type v)
+  {
+    const K::Point_3& p = m.mesh->point(v);
+    return K::Point_3(std::ldexp(p.x(), m.exponent), std::ldexp(p.y(), m.exponent), std::ldexp(p.z(), m.exponent));
+  }
+};
+
+} // namespace
+
+TEST(Atlas, HugeAndTinyCoordinatesGiveTheSameAtlas)
+{
+  Mesh tm = load("elephant-with-holes.off");
+  const Atlas unit = make_atlas(tm, DS::parameters::default_values());
+  for(int exponent : { -100, 100 })
+  {
+    SCOPED_TRACE(exponent);
+    Mesh copy = tm;
+    const Atlas scaled = make_atlas(copy, DS::parameters::vertex_point_map(Power_of_two_scaled_points{ &copy, exponent }));
+    std::size_t different_patches = 0, different_uvs = 0;
+    for(Mesh::Face_index f : tm.faces())
+      different_patches += (unit.patch[f] != scaled.patch[f]) ? 1 : 0;
+    for(Mesh::Halfedge_index h : tm.halfedges())
+      if(!tm.is_border(h))
+        different_uvs += (CGAL::squared_distance(unit.uv[h], scaled.uv[h]) > 1e-20) ? 1 : 0;
+    EXPECT_EQ(different_patches, 0u);
+    EXPECT_EQ(different_uvs, 0u);
+    EXPECT_EQ(scaled.report.parameterization.number_of_fallbacks, unit.report.parameterization.number_of_fallbacks);
+  }
+}
+
 TEST(Atlas, WorksOnPolyhedron)
 {
   typedef CGAL::Polyhedron_3<K> Polyhedron;

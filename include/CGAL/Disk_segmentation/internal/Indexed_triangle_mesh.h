@@ -209,6 +209,36 @@ void check_vertices(const TriangleMesh& tm,
   }
 }
 
+// Centers the used vertices and scales them by a power of two so that the
+// bounding box's largest side lies in [1, 2). Every algorithm of the package
+// is invariant under similarities, and scaling by a power of two is exact,
+// so results do not change, while huge (1e30) and tiny (1e-30) meshes meet
+// the floating-point ranges of unit-size ones (no overflow of squared
+// lengths, no underflow of areas).
+inline void normalize_coordinates(Indexed_triangle_mesh& m)
+{
+  std::array<double, 3> lo{{ std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+                             std::numeric_limits<double>::infinity() }};
+  std::array<double, 3> hi{{ -lo[0], -lo[1], -lo[2] }};
+  for(const auto& c : m.corners)
+    for(Index v : c)
+      for(int k = 0; k < 3; ++k)
+      {
+        lo[k] = (std::min)(lo[k], m.points[v][k]);
+        hi[k] = (std::max)(hi[k], m.points[v][k]);
+      }
+  const double side = (std::max)(hi[0] - lo[0], (std::max)(hi[1] - lo[1], hi[2] - lo[2]));
+  if(!(side > 0) || !std::isfinite(side))
+    return;
+  int exponent = 0;
+  std::frexp(side, &exponent);  // side = f * 2^exponent, f in [0.5, 1)
+  const double scale = std::ldexp(1., 1 - exponent);
+  const std::array<double, 3> center{{ (lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2 }};
+  for(auto& p : m.points)
+    for(int k = 0; k < 3; ++k)
+      p[k] = (p[k] - center[k]) * scale;
+}
+
 // Reads vertex coordinates as doubles through the vertex point map and the
 // geometric traits of the named parameters. The algorithms need distances
 // and areas only as approximations of the geodesic structure, so doubles
@@ -300,6 +330,7 @@ void build_indexed_triangle_mesh(const TriangleMesh& tm,
   std::vector<vertex_descriptor> no_new_vertex;
   build_indexed_triangle_mesh(tm, faces(tm), coordinates_of, face_index_of, vertex_index_of, no_new_vertex, out);
   check_vertices(tm, vertex_handles, out);
+  normalize_coordinates(out);
   if(vertex_handles_out != nullptr)
     vertex_handles_out->swap(vertex_handles);
 }
