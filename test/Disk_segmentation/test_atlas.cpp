@@ -14,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -235,6 +236,57 @@ TEST(Atlas, HugeAndTinyCoordinatesGiveTheSameAtlas)
     EXPECT_EQ(different_uvs, 0u);
     EXPECT_EQ(scaled.report.parameterization.number_of_fallbacks, unit.report.parameterization.number_of_fallbacks);
   }
+}
+
+TEST(Atlas, DegenerateFacesStillGiveAValidAtlas)
+{
+  // A square whose bottom edge has a midpoint vertex, making one face flat
+  // (three collinear corners), plus a separate component that is a single
+  // flat triangle, which cannot merge with anything.
+  TS::Soup s;
+  s.points = { {{ 0, 0, 0 }}, {{ 2, 0, 0 }}, {{ 2, 2, 0 }}, {{ 0, 2, 0 }}, {{ 1, 0, 0 }},
+               {{ 5, 5, 5 }}, {{ 6, 5, 5 }}, {{ 7, 5, 5 }} };
+  s.triangles = { {{ 0, 4, 3 }}, {{ 4, 2, 3 }}, {{ 4, 1, 2 }}, {{ 0, 1, 4 }}, {{ 5, 6, 7 }} };
+  for(double threshold : { 0., 100. })
+  {
+    SCOPED_TRACE(threshold);
+    Mesh tm = make(s);
+    const Atlas a = make_atlas(tm, DS::parameters::number_of_seeds(5).merge_threshold(threshold));
+    EXPECT_EQ(a.report.parameterization.number_of_invalid_charts, 0u);
+    const TS::Atlas_report atlas = TS::check_atlas(tm, a.patch, a.uv, 512);
+    EXPECT_TRUE(atlas.ok()) << atlas.summary();
+    EXPECT_EQ(atlas.faces_zero_3d_area, 2u);
+  }
+}
+
+TEST(Atlas, SplittingAChartGivesValidDiskPieces)
+{
+  // The last resort of the fallback chain, run directly on a chart that
+  // does not need it: the pieces must cover the chart once, each a valid disk.
+  const Mesh tm = make(TS::disk(10, 32));
+  DS::internal::Indexed_triangle_mesh m;
+  std::vector<Mesh::Face_index> face_handles;
+  DS::internal::build_indexed_triangle_mesh(tm, DS::parameters::default_values(), m, face_handles);
+  DS::internal::Voronoi_fps fps(m);
+  std::vector<DS::internal::Index> all(m.number_of_faces());
+  for(DS::internal::Index f = 0; f < all.size(); ++f) all[f] = f;
+  std::vector<DS::internal::Chart> pieces;
+  std::vector<DS::internal::Chart_outcome> outcomes;
+  DS::internal::split_and_parameterize(m, fps, all, DS::Parameterization_method::ARAP, pieces, outcomes);
+  ASSERT_GE(pieces.size(), 2u);
+  std::vector<int> covered(m.number_of_faces(), 0);
+  for(std::size_t i = 0; i < pieces.size(); ++i)
+  {
+    EXPECT_TRUE(outcomes[i].valid);
+    std::vector<Mesh::Face_index> fs;
+    for(DS::internal::Index f : pieces[i].faces)
+    {
+      ++covered[f];
+      fs.push_back(face_handles[f]);
+    }
+    EXPECT_TRUE(TS::is_disk(tm, fs));
+  }
+  EXPECT_EQ(std::count(covered.begin(), covered.end(), 1), static_cast<long>(covered.size()));
 }
 
 TEST(Atlas, WorksOnPolyhedron)

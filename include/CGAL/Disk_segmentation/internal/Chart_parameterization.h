@@ -237,6 +237,16 @@ inline std::string parameterize_chart_with(const Indexed_triangle_mesh& m, Chart
     c.uv[0] = {{ 0., 0. }};
     c.uv[1] = {{ l1, 0. }};
     c.uv[2] = {{ x, y }};
+    // A degenerate face (collinear or coincident corners) has no isometric
+    // layout; an equilateral triangle keeps the chart valid.
+    const double longest = (std::max)(l1, (std::max)(Indexed_triangle_mesh::distance(p1, p2),
+                                                     Indexed_triangle_mesh::distance(p2, p0)));
+    if(!(y > 1e-6 * longest))
+    {
+      const double side = longest > 0 ? longest : 1.;
+      c.uv[1] = {{ side, 0. }};
+      c.uv[2] = {{ side / 2, side * std::sqrt(3.) / 2 }};
+    }
     return std::string();
   }
 

@@ -119,11 +119,11 @@ private:
 
   double score(Index a, Index b, double shared_length) const
   {
-    const double larger_area = (std::max)(area_[a], area_[b]);
-    // Degenerate (zero-area) regions merge first: they are only slivers.
-    if(!(larger_area > 0.))
+    // A region without area (degenerate faces only) merges first into any
+    // neighbor it forms a disk with: alone it could not be parameterized.
+    if(!(area_[a] > 0.) || !(area_[b] > 0.))
       return std::numeric_limits<double>::infinity();
-    return shared_length / std::sqrt(larger_area);
+    return shared_length / std::sqrt((std::max)(area_[a], area_[b]));
   }
 
   void push_candidate(Index a, Index b, double shared_length)
