@@ -17,5 +17,6 @@
 #include <CGAL/Disk_segmentation/parameterize_patches.h>
 #include <CGAL/Disk_segmentation/pack_patches.h>
 #include <CGAL/Disk_segmentation/uv_atlas.h>
+#include <CGAL/Disk_segmentation/atlas_quality.h>
 
 #endif // CGAL_DISK_SEGMENTATION_H

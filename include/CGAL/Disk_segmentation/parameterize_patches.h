@@ -55,6 +55,9 @@ struct Chart_report
   bool split = false;
   /// `true` if the chart's UVs are valid (finite, no flipped or degenerate triangle, simple border).
   bool valid = false;
+  /// `true` if the requested method itself failed (solver error, no border, non-manifold chart,
+  /// non-finite UVs) rather than returning a map with flipped triangles or an overlapping border.
+  bool method_error = false;
   /// Why the requested method's result was rejected; empty if it was kept.
   std::string problem;
   /// Area-weighted mean of |log(s1/s2)| over the chart (0 for an isometry).
@@ -75,6 +78,9 @@ struct Parameterization_report
   std::size_t number_of_split_patches = 0;
   /// Charts left invalid (only possible with `use_fallback(false)`).
   std::size_t number_of_invalid_charts = 0;
+  /// Charts where the requested method itself failed (see `Chart_report::method_error`),
+  /// whether or not a fallback then repaired them.
+  std::size_t number_of_method_errors = 0;
 };
 
 /// \ingroup PkgDiskSegmentationRef
@@ -199,6 +205,13 @@ inline void split_and_parameterize(const Indexed_triangle_mesh& m, Voronoi_fps& 
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{require_disk_patches}
+///     \cgalParamDescription{when `false`, patches that are not topological disks are parameterized
+///       anyway, as a segmentation that ignores topology would be (for comparisons): they usually
+///       fail, which the report says, instead of an exception}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_threads}
 ///     \cgalParamDescription{maximum number of threads (0: TBB's choice; 1: sequential). Without TBB, sequential.}
 ///     \cgalParamType{`unsigned int`}
@@ -227,7 +240,7 @@ inline void split_and_parameterize(const Indexed_triangle_mesh& m, Voronoi_fps& 
 /// @return one report per chart and the counts of fallbacks, splits and invalid charts
 ///
 /// @throws Input_error on a bad mesh (as `voronoi_fps_segmentation()`), on patch ids that are not
-///         contiguous, or on a patch that is not a topological disk.
+///         contiguous, or on a patch that is not a topological disk (unless `require_disk_patches(false)`).
 template <typename TriangleMesh, typename FacePatchMap, typename UVMap,
           typename NamedParameters = parameters::Default_named_parameters>
 Parameterization_report parameterize_patches(const TriangleMesh& tm,
@@ -247,6 +260,8 @@ Parameterization_report parameterize_patches(const TriangleMesh& tm,
                      default_parameterization_method);
   const bool use_fallback = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::use_fallback), true);
   const unsigned int threads = internal::number_of_threads_parameter(np);
+  const bool require_disks =
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::require_disk_patches), true);
 
   internal::Indexed_triangle_mesh m;
   std::vector<typename GT::face_descriptor> face_handles;
@@ -263,7 +278,7 @@ Parameterization_report parameterize_patches(const TriangleMesh& tm,
   {
     if(patch_faces[p].empty())
       throw Input_error("patch ids are not contiguous: no face has id " + std::to_string(p));
-    if(!topology.is_disk(patch_faces[p]))
+    if(require_disks && !topology.is_disk(patch_faces[p]))
       throw Input_error("patch " + std::to_string(p) + " is not a topological disk");
   }
 
@@ -325,12 +340,14 @@ Parameterization_report parameterize_patches(const TriangleMesh& tm,
     r.fallback = outcomes[p].fallback;
     r.split = (p >= number_of_patches) || (c.faces.size() != patch_faces[p].size());
     r.valid = outcomes[p].valid;
+    r.method_error = outcomes[p].method_error;
     r.problem = outcomes[p].problem;
     const internal::Chart_distortion d = internal::chart_distortion(m, c);
     r.angle_distortion = d.angle;
     r.area_distortion = d.area;
     report.number_of_fallbacks += r.fallback ? 1 : 0;
     report.number_of_invalid_charts += r.valid ? 0 : 1;
+    report.number_of_method_errors += r.method_error ? 1 : 0;
 
     // The corner of face f whose target is indexed vertex v gets uv[local v].
     for(std::size_t t = 0; t < c.faces.size(); ++t)

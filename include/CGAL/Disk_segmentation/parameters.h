@@ -36,6 +36,7 @@ enum texture_resolution_t { texture_resolution };
 enum padding_in_texels_t { padding_in_texels };
 enum number_of_threads_t { number_of_threads };
 enum progress_callback_t { progress_callback };
+enum require_disk_patches_t { require_disk_patches };
 
 } // namespace internal_np
 
@@ -84,6 +85,7 @@ struct Named_function_parameters
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(padding_in_texels_t, padding_in_texels)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(number_of_threads_t, number_of_threads)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(progress_callback_t, progress_callback)
+  CGAL_DISK_SEGMENTATION_ADD_PARAMETER(require_disk_patches_t, require_disk_patches)
 #undef CGAL_DISK_SEGMENTATION_ADD_PARAMETER
 };
 
@@ -152,6 +154,9 @@ CGAL_DISK_SEGMENTATION_ADD_PARAMETER(number_of_threads_t, number_of_threads)
 /// (`std::function<void(const std::string&, std::size_t, std::size_t)>`);
 /// calls are serialized.
 CGAL_DISK_SEGMENTATION_ADD_PARAMETER(progress_callback_t, progress_callback)
+/// \ingroup PkgDiskSegmentationRef
+/// Whether `parameterize_patches()` refuses patches that are not topological disks (`bool`).
+CGAL_DISK_SEGMENTATION_ADD_PARAMETER(require_disk_patches_t, require_disk_patches)
 #undef CGAL_DISK_SEGMENTATION_ADD_PARAMETER
 
 } // namespace parameters

@@ -65,6 +65,8 @@ inline Chart make_chart(const Indexed_triangle_mesh& m, const std::vector<Index>
   return c;
 }
 
+constexpr const char* non_finite_uv = "non-finite UV";
+
 // What is wrong with a chart's UVs, or an empty string. A chart is valid when
 // its UVs are finite, every triangle keeps the 3D winding with a non-negligible
 // area, and its border is a simple polygon; a locally injective map of a disk
@@ -75,7 +77,7 @@ inline std::string chart_uv_problem(const Chart& c, const std::vector<std::array
   typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_2 Point_2;
   for(const auto& u : uv)
     if(!std::isfinite(u[0]) || !std::isfinite(u[1]))
-      return "non-finite UV";
+      return non_finite_uv;
 
   double total = 0;
   std::vector<double> areas(c.triangles.size());
@@ -301,6 +303,10 @@ struct Chart_outcome
   Parameterization_method used = Parameterization_method::TUTTE;
   bool fallback = false;  // another method than the requested one was used
   bool valid = false;
+  // The requested method itself failed (solver error, no border, not a
+  // manifold chart, non-finite UVs), as opposed to returning a map with
+  // flipped triangles or a self-intersecting border.
+  bool method_error = false;
   std::string problem;    // why the requested method was rejected (empty if it was not)
 };
 
@@ -322,13 +328,18 @@ inline Chart_outcome parameterize_chart(const Indexed_triangle_mesh& m, Chart& c
   for(std::size_t i = 0; i < chain.size(); ++i)
   {
     std::string problem = parameterize_chart_with(m, c, chain[i], border_loop);
+    bool error = !problem.empty();
     if(problem.empty())
     {
       keep_winding(c);
       problem = chart_uv_problem(c, c.uv, border_loop);
+      error = (problem == non_finite_uv);
     }
     if(i == 0)
+    {
       outcome.problem = problem;
+      outcome.method_error = error;
+    }
     if(problem.empty())
     {
       outcome.used = chain[i];
