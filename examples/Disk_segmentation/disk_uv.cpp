@@ -8,7 +8,8 @@
 //           [--report OUT.json] [--patch-ids FILE] [--colored FILE.ply]
 //           [--method arap|conformal|lscm|mvc|tutte] [--packer tight|grid]
 //           [--resolution 1024] [--padding 2] [-n 10] [-k 5]
-//           [--threshold 0.7624] [--threads 0] [--no-fallback] [--quiet]
+//           [--threshold 0.7624] [--max-distortion 1] [--threads 0]
+//           [--no-fallback] [--quiet]
 //
 // Prints a one-line summary; on any error prints one line on stderr and
 // exits with status 1 (2 for bad command-line usage). Outputs are written
@@ -135,6 +136,7 @@ int main(int argc, char** argv)
   std::string method_name = DS::to_string(DS::default_parameterization_method), packer_name = "tight";
   std::size_t n = 10, k = 5;
   double threshold = DS::regular_polygon_threshold(5), padding = 2;
+  double max_distortion = DS::default_max_area_distortion;
   unsigned int resolution = 1024, threads = 0;
   bool no_fallback = false, quiet = false;
   app.add_option("INPUT", input, "input triangle mesh (.off .obj .ply .stl .ts)")->required();
@@ -153,6 +155,8 @@ int main(int argc, char** argv)
   app.add_option("-n,--seeds", n, "number of farthest-point seeds")->capture_default_str();
   app.add_option("-k,--subsamples", k, "seeds used to re-sample a region that is not a disk")->capture_default_str();
   app.add_option("--threshold", threshold, "merge score threshold (eps_5 = 0.7624 by default)")->capture_default_str();
+  app.add_option("--max-distortion", max_distortion,
+                 "split charts whose mean |log(area ratio)| exceeds this (inf: never)")->capture_default_str();
   app.add_option("--threads", threads, "maximum number of threads (0: all)")->capture_default_str();
   app.add_flag("--no-fallback", no_fallback, "keep invalid charts (and report them) instead of redoing them");
   app.add_flag("-q,--quiet", quiet, "no progress display and no summary");
@@ -188,7 +192,8 @@ int main(int argc, char** argv)
     const DS::Atlas_report report = DS::uv_atlas(
       mesh, uv,
       DS::parameters::number_of_seeds(n).number_of_subsamples(k).merge_threshold(threshold)
-        .parameterization_method(method).use_fallback(!no_fallback).packing_method(packer)
+        .parameterization_method(method).use_fallback(!no_fallback).max_area_distortion(max_distortion)
+        .packing_method(packer)
         .texture_resolution(resolution).padding_in_texels(padding).number_of_threads(threads)
         .face_patch_map(patch)
         .progress_callback(std::function<void(const std::string&, std::size_t, std::size_t)>(

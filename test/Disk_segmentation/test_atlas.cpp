@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -163,6 +164,26 @@ TEST(Atlas, FallbackRepairsAChartThatTheRequestedMethodFlips)
   EXPECT_TRUE(atlas.ok()) << atlas.summary();
 }
 
+TEST(Atlas, DistortionSplittingOnlyCutsChartsThatAreTooDistorted)
+{
+  Mesh tm = load("elephant.off");
+  Mesh copy = tm;
+  const Atlas paper = make_atlas(tm, DS::parameters::max_area_distortion(std::numeric_limits<double>::infinity()));
+  const Atlas split = make_atlas(copy, DS::parameters::default_values());
+  expect_valid_atlas(tm, paper);
+  expect_valid_atlas(copy, split);
+  EXPECT_EQ(paper.report.parameterization.number_of_split_patches, 0u);
+  EXPECT_GT(split.report.parameterization.number_of_split_patches, 0u) << "elephant has tube-like charts";
+  EXPECT_GT(split.report.number_of_charts, paper.report.number_of_charts);
+  // Every split chart is a piece of one chart of the unsplit atlas.
+  EXPECT_TRUE(TS::refines(TS::patches_as_face_index_sets(copy, split.patch),
+                          TS::patches_as_face_index_sets(tm, paper.patch)));
+  for(const DS::Chart_report& c : split.report.parameterization.charts)
+    if(c.faces >= 32)
+      EXPECT_LE(c.area_distortion, DS::default_max_area_distortion) << "chart " << c.patch;
+  EXPECT_THROW(make_atlas(copy, DS::parameters::max_area_distortion(0.)), DS::Input_error);
+}
+
 TEST(Atlas, SameResultForAnyNumberOfThreads)
 {
   Mesh tm = load("elephant.off");
@@ -272,7 +293,8 @@ TEST(Atlas, SplittingAChartGivesValidDiskPieces)
   for(DS::internal::Index f = 0; f < all.size(); ++f) all[f] = f;
   std::vector<DS::internal::Chart> pieces;
   std::vector<DS::internal::Chart_outcome> outcomes;
-  DS::internal::split_and_parameterize(m, fps, all, DS::Parameterization_method::ARAP, pieces, outcomes);
+  DS::internal::split_and_parameterize(m, fps, all, DS::Parameterization_method::ARAP, pieces, outcomes,
+                                       DS::internal::Split_rule{ m, DS::default_max_area_distortion });
   ASSERT_GE(pieces.size(), 2u);
   std::vector<int> covered(m.number_of_faces(), 0);
   for(std::size_t i = 0; i < pieces.size(); ++i)

@@ -159,10 +159,16 @@ inline std::size_t count_texel_overlaps(const std::vector<std::array<std::array<
       xmin = (std::min)(xmin, t[i][0]); xmax = (std::max)(xmax, t[i][0]);
       ymin = (std::min)(ymin, t[i][1]); ymax = (std::max)(ymax, t[i][1]);
     }
-    const long i0 = (std::max)(0L, static_cast<long>(std::floor(xmin * r - 0.5)));
-    const long i1 = (std::min)(static_cast<long>(resolution) - 1, static_cast<long>(std::ceil(xmax * r - 0.5)));
-    const long j0 = (std::max)(0L, static_cast<long>(std::floor(ymin * r - 0.5)));
-    const long j1 = (std::min)(static_cast<long>(resolution) - 1, static_cast<long>(std::ceil(ymax * r - 0.5)));
+    // Clamped in floating point first: far-away UVs would overflow a long.
+    auto texel_range = [r](double lo, double hi) {
+      const double first = (std::max)(0., std::floor(lo * r - 0.5));
+      const double last = (std::min)(r - 1, std::ceil(hi * r - 0.5));
+      return std::make_pair(static_cast<long>(first), static_cast<long>(last));
+    };
+    if(!(xmax * r + 0.5 >= 0) || !(ymax * r + 0.5 >= 0) || !(xmin * r - 0.5 <= r) || !(ymin * r - 0.5 <= r))
+      continue;
+    const std::pair<long, long> ri = texel_range(xmin, xmax), rj = texel_range(ymin, ymax);
+    const long i0 = ri.first, i1 = ri.second, j0 = rj.first, j1 = rj.second;
     const double orientation = (t[1][0] - t[0][0]) * (t[2][1] - t[0][1]) - (t[1][1] - t[0][1]) * (t[2][0] - t[0][0]);
     if(orientation == 0)
       continue;
@@ -279,8 +285,9 @@ Atlas_quality atlas_quality(const TriangleMesh& tm, UVMap uv_map, FacePatchMap f
     const internal::Triangle_jacobian& j = jacobians[f];
     ++chart_faces[ids[f]];
     chart_area_3d[ids[f]] += j.area_3d;
-    const double a_uv = 0.5 * ((uv[f][1][0] - uv[f][0][0]) * (uv[f][2][1] - uv[f][0][1]) -
-                               (uv[f][1][1] - uv[f][0][1]) * (uv[f][2][0] - uv[f][0][0]));
+    // Unsigned: a flipped face still covers its UV area.
+    const double a_uv = 0.5 * std::abs((uv[f][1][0] - uv[f][0][0]) * (uv[f][2][1] - uv[f][0][1]) -
+                                       (uv[f][1][1] - uv[f][0][1]) * (uv[f][2][0] - uv[f][0][0]));
     chart_area_uv[ids[f]] += a_uv;
     total_uv += a_uv;
     total_3d += j.area_3d;

@@ -37,6 +37,7 @@ enum padding_in_texels_t { padding_in_texels };
 enum number_of_threads_t { number_of_threads };
 enum progress_callback_t { progress_callback };
 enum require_disk_patches_t { require_disk_patches };
+enum max_area_distortion_t { max_area_distortion };
 
 } // namespace internal_np
 
@@ -86,6 +87,7 @@ struct Named_function_parameters
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(number_of_threads_t, number_of_threads)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(progress_callback_t, progress_callback)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(require_disk_patches_t, require_disk_patches)
+  CGAL_DISK_SEGMENTATION_ADD_PARAMETER(max_area_distortion_t, max_area_distortion)
 #undef CGAL_DISK_SEGMENTATION_ADD_PARAMETER
 };
 
@@ -157,6 +159,9 @@ CGAL_DISK_SEGMENTATION_ADD_PARAMETER(progress_callback_t, progress_callback)
 /// \ingroup PkgDiskSegmentationRef
 /// Whether `parameterize_patches()` refuses patches that are not topological disks (`bool`).
 CGAL_DISK_SEGMENTATION_ADD_PARAMETER(require_disk_patches_t, require_disk_patches)
+/// \ingroup PkgDiskSegmentationRef
+/// Charts whose mean area distortion exceeds this value are split (`double`).
+CGAL_DISK_SEGMENTATION_ADD_PARAMETER(max_area_distortion_t, max_area_distortion)
 #undef CGAL_DISK_SEGMENTATION_ADD_PARAMETER
 
 } // namespace parameters

@@ -87,7 +87,8 @@ Atlas_report uv_atlas(const TriangleMesh& tm, UVMap uv_map, const NamedParameter
 
   CGAL::Real_timer total;
   total.start();
-  // Packing parameters are checked now, not after the UVs are written.
+  // Later stages' parameters are checked now, before anything is written.
+  internal::parameterization_settings(np);
   internal::packing_settings(np);
   Atlas_report report;
   internal::Progress progress = internal::Progress::from(np);

@@ -264,14 +264,29 @@ inline std::string parameterize_chart_with(const Indexed_triangle_mesh& m, Chart
     {
       // Local/global iterations with one factorization (see
       // Local_global_arap.h for why not SMP::ARAP_parameterizer_3), from
-      // the injective mean value map, keeping only valid iterates.
-      const std::string problem =
+      // an injective map, keeping only valid iterates. Mean value
+      // coordinates start closer to ARAP; Tutte's map, which ignores the
+      // geometry, is the start when near-degenerate 3D triangles make the
+      // mean value map invalid.
+      std::string problem =
         run_parameterizer(mesh, SMP::Mean_value_coordinates_parameterizer_3<Chart_mesh, Circle, Direct_solver>(), border, c);
+      if(problem.empty())
+      {
+        keep_winding(c);
+        problem = chart_uv_problem(c, c.uv, border_loop);
+      }
       if(!problem.empty())
-        return problem;
-      keep_winding(c);
-      if(!chart_uv_problem(c, c.uv, border_loop).empty())
-        return "ARAP: the mean value initialization is invalid";
+      {
+        problem = run_parameterizer(mesh, SMP::Barycentric_mapping_parameterizer_3<Chart_mesh, Circle, Direct_solver>(),
+                                    border, c);
+        if(problem.empty())
+        {
+          keep_winding(c);
+          problem = chart_uv_problem(c, c.uv, border_loop);
+        }
+        if(!problem.empty())
+          return "ARAP: no valid initialization (" + problem + ")";
+      }
       std::vector<std::array<double, 3> > points;
       points.reserve(c.vertices.size());
       for(Index v : c.vertices)
