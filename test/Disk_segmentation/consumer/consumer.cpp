@@ -1,0 +1,68 @@
+// Copyright (c) 2026 The Disk_segmentation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Built against an installed Disk_segmentation (see CMakeLists.txt next to
+// this file): segments a mesh into topological disks and prints the number
+// of patches. Without an argument it segments a generated icosahedron.
+// Exits with 1 on any failure.
+
+#include <CGAL/Disk_segmentation.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/generators.h>
+
+#include <exception>
+#include <iostream>
+#include <vector>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+namespace DS = CGAL::Disk_segmentation;
+
+int main(int argc, char** argv)
+{
+  Mesh mesh;
+  if(argc > 1)
+  {
+    if(!CGAL::IO::read_polygon_mesh(argv[1], mesh))
+    {
+      std::cerr << "consumer: cannot read " << argv[1] << std::endl;
+      return 1;
+    }
+  }
+  else
+  {
+    CGAL::make_icosahedron(mesh, K::Point_3(0, 0, 0), 1.);
+  }
+
+  try
+  {
+    auto patch = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:patch", 0).first;
+    const std::size_t count = DS::segment_into_disks(mesh, patch, DS::parameters::number_of_seeds(8));
+
+    std::vector<std::vector<Mesh::Face_index> > faces_of(count);
+    for(Mesh::Face_index f : faces(mesh))
+    {
+      if(patch[f] >= count)
+      {
+        std::cerr << "consumer: patch id out of range" << std::endl;
+        return 1;
+      }
+      faces_of[patch[f]].push_back(f);
+    }
+    for(const std::vector<Mesh::Face_index>& p : faces_of)
+      if(p.empty() || !DS::is_topological_disk(p, mesh))
+      {
+        std::cerr << "consumer: a patch is empty or not a topological disk" << std::endl;
+        return 1;
+      }
+
+    std::cout << "patches: " << count << " (" << num_faces(mesh) << " faces)" << std::endl;
+    return count > 0 ? 0 : 1;
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << "consumer: " << e.what() << std::endl;
+    return 1;
+  }
+}
