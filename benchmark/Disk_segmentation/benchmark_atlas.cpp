@@ -22,7 +22,9 @@
 // back in with the timer paused before each iteration.
 //
 // All times are wall-clock (UseRealTime), so that the threads:all runs show
-// their speed-up; every rate below is per wall-clock second.
+// their speed-up; every rate below is per wall-clock second. The CPU column
+// is the CPU time of the whole process (MeasureProcessCPUTime), all threads
+// together.
 //
 // Counters:
 //   items_per_second   faces per second
@@ -249,7 +251,9 @@ void BM_uv_atlas(benchmark::State& state, int L, unsigned int threads)
   state.counters["pack_ms"] = benchmark::Counter(1e3 * pack_seconds, benchmark::Counter::kAvgIterations);
 }
 
-// Wall-clock milliseconds, and the fastest repetition as an extra statistic.
+// Wall-clock milliseconds (the CPU column is the CPU time of all threads of
+// the process, so CPU / Time is the number of cores the run actually got),
+// and the fastest repetition as an extra statistic.
 // Cheap stages (packing) run like benchmark_segmentation: a minimum time up
 // to 89k faces, then 3 and 2 iterations. The parameterization runs up to
 // ~100 times longer, so its small meshes get fewer iterations and the
@@ -259,6 +263,7 @@ void apply_run_policy(benchmark::internal::Benchmark* b, std::size_t faces, bool
 {
   b->Unit(benchmark::kMillisecond);
   b->UseRealTime();
+  b->MeasureProcessCPUTime();
   b->ComputeStatistics("min", minimum);
   if(cheap)
   {

@@ -10,9 +10,10 @@
 //   BM_segment/faces:F           segment_into_disks() (the three steps)
 //
 // The meshes are elephant.off (level 0) and its Loop subdivisions (level L
-// has 4^L times as many faces). Each level is built once, on first use, and
-// kept for the whole run; so are the Voronoi and refined labels that feed
-// the refine and merge benchmarks. None of that is timed.
+// has 4^L times as many faces, see benchmark_meshes.h). Each level is built
+// once, on first use, and kept for the whole run; so are the Voronoi and
+// refined labels that feed the refine and merge benchmarks. None of that is
+// timed.
 //
 // Items processed are faces, so the "items_per_second" column reads as
 // faces per second. The "patches" counter is the number of regions the step
