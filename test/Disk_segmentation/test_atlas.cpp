@@ -3,6 +3,7 @@
 // test_support::check_atlas() (independent_atlas.h), written independently
 // from the library.
 
+#include "atlas_fixture.h"
 #include "independent_atlas.h"
 #include "independent_topology.h"
 #include "test_meshes.h"
@@ -24,6 +25,9 @@
 
 namespace DS = CGAL::Disk_segmentation;
 namespace TS = test_support;
+using test_support::Atlas;
+using test_support::expect_valid_atlas;
+using test_support::make_atlas;
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
@@ -52,36 +56,8 @@ Mesh make(const TS::Soup& soup)
   return tm;
 }
 
-struct Atlas
-{
-  Patch_map patch;
-  UV_map uv;
-  DS::Atlas_report report;
-};
 
-template <typename NamedParameters>
-Atlas make_atlas(Mesh& tm, const NamedParameters& np)
-{
-  Atlas a;
-  a.patch = tm.add_property_map<Mesh::Face_index, std::size_t>("f:test_patch", 0).first;
-  a.uv = tm.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:test_uv", K::Point_2(0, 0)).first;
-  a.report = DS::uv_atlas(tm, a.uv, np.face_patch_map(a.patch));
-  return a;
-}
 
-void expect_valid_atlas(const Mesh& tm, const Atlas& a)
-{
-  const TS::Partition_report partition = TS::check_disk_partition(tm, a.patch);
-  EXPECT_TRUE(partition.ok) << partition.problem;
-  EXPECT_EQ(partition.number_of_patches, a.report.number_of_charts);
-  const TS::Atlas_report atlas = TS::check_atlas(tm, a.patch, a.uv, 1024);
-  EXPECT_TRUE(atlas.ok()) << atlas.summary();
-  EXPECT_EQ(a.report.parameterization.number_of_invalid_charts, 0u);
-}
-
-const DS::Parameterization_method all_methods[] = {
-  DS::Parameterization_method::DISCRETE_CONFORMAL, DS::Parameterization_method::LSCM,
-  DS::Parameterization_method::ARAP, DS::Parameterization_method::MEAN_VALUE, DS::Parameterization_method::TUTTE };
 
 // A fan of triangles around a border vertex whose 3D angles add up to about
 // 740 degrees: the surface is embedded (zig-zag pleats), but any map that
@@ -108,7 +84,7 @@ TEST(Atlas, EveryMethodGivesAValidAtlasOnShippedMeshes)
   for(const char* name : { "elephant.off", "elephant-with-holes.off", "blobby_3cc.off", "knot1.off",
                            "bones.off", "eight.off", "couplingdown.off" })
   {
-    for(DS::Parameterization_method method : all_methods)
+    for(DS::Parameterization_method method : TS::all_parameterization_methods)
     {
       SCOPED_TRACE(std::string(name) + " " + DS::to_string(method));
       Mesh tm = load(name);

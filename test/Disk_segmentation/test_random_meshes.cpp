@@ -11,6 +11,7 @@
 // Also: thousands of tiny components, isolated vertices and duplicated
 // vertices (same coordinates, different indices).
 
+#include "atlas_fixture.h"
 #include "independent_atlas.h"
 #include "independent_topology.h"
 #include "test_meshes.h"
@@ -37,6 +38,9 @@
 
 namespace DS = CGAL::Disk_segmentation;
 namespace TS = test_support;
+using test_support::Atlas;
+using test_support::expect_valid_atlas;
+using test_support::make_atlas;
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
@@ -49,9 +53,6 @@ const std::uint32_t seeds[] = { 1u,     2u,     3u,      5u,      8u,         13
                                 34u,    55u,    89u,     144u,    233u,       377u,       610u,
                                 987u,   1597u,  2584u,   4181u,   20250101u,  4294967295u };
 
-const DS::Parameterization_method all_methods[] = {
-  DS::Parameterization_method::DISCRETE_CONFORMAL, DS::Parameterization_method::LSCM,
-  DS::Parameterization_method::ARAP, DS::Parameterization_method::MEAN_VALUE, DS::Parameterization_method::TUTTE };
 
 int uniform_int(std::mt19937& rng, int lo, int hi) // in [lo, hi]
 {
@@ -315,39 +316,14 @@ Random_case make_random_case(std::uint32_t seed)
   c.n = uniform_int(rng, 1, 40);
   c.k = uniform_int(rng, 2, 8);
   c.threshold = uniform_real(rng, 0., 2.);
-  c.method = all_methods[uniform_int(rng, 0, 4)];
+  c.method = TS::all_parameterization_methods[uniform_int(rng, 0, 4)];
   d << " n=" << c.n << " k=" << c.k << " threshold=" << c.threshold << " method=" << DS::to_string(c.method)
     << " (" << c.soup.points.size() << " points, " << c.soup.triangles.size() << " triangles)";
   c.description = d.str();
   return c;
 }
 
-struct Atlas
-{
-  Patch_map patch;
-  UV_map uv;
-  DS::Atlas_report report;
-};
 
-template <typename NamedParameters>
-Atlas make_atlas(Mesh& tm, const NamedParameters& np)
-{
-  Atlas a;
-  a.patch = tm.add_property_map<Mesh::Face_index, std::size_t>("f:test_patch", 0).first;
-  a.uv = tm.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:test_uv", K::Point_2(0, 0)).first;
-  a.report = DS::uv_atlas(tm, a.uv, np.face_patch_map(a.patch));
-  return a;
-}
-
-void expect_valid_atlas(const Mesh& tm, const Atlas& a, unsigned resolution = 512)
-{
-  const TS::Partition_report partition = TS::check_disk_partition(tm, a.patch);
-  EXPECT_TRUE(partition.ok) << partition.problem;
-  EXPECT_EQ(partition.number_of_patches, a.report.number_of_charts);
-  const TS::Atlas_report atlas = TS::check_atlas(tm, a.patch, a.uv, resolution);
-  EXPECT_TRUE(atlas.ok()) << atlas.summary();
-  EXPECT_EQ(a.report.parameterization.number_of_invalid_charts, 0u);
-}
 
 // Faces of each connected component (through shared vertices), as face
 // indices; component of each face.
@@ -409,7 +385,7 @@ TEST(RandomMeshes, RandomSurfacesAndParametersGiveValidAtlases)
                                           .number_of_subsamples(std::size_t(c.k))
                                           .merge_threshold(c.threshold)
                                           .parameterization_method(c.method)));
-    expect_valid_atlas(tm, a);
+    expect_valid_atlas(tm, a, 512);
     expect_charts_within_components(tm, a);
   }
   // The seeds must keep exercising what this test is about.
@@ -489,13 +465,13 @@ TEST(RandomMeshes, IsolatedVerticesAreIgnored)
   const K::Point_3 first = tm.point(*vertices(tm).begin()); // a copy: add_vertex may reallocate
   tm.add_vertex(first);
   tm.add_vertex(K::Point_3(1., 0., 0.));
-  for(DS::Parameterization_method method : all_methods)
+  for(DS::Parameterization_method method : TS::all_parameterization_methods)
   {
     SCOPED_TRACE(DS::to_string(method));
     Mesh copy = tm;
     Atlas a;
     ASSERT_NO_THROW(a = make_atlas(copy, DS::parameters::parameterization_method(method)));
-    expect_valid_atlas(copy, a);
+    expect_valid_atlas(copy, a, 512);
   }
 }
 
@@ -528,14 +504,14 @@ TEST(RandomMeshes, DuplicatedVerticesAreDistinctVertices)
   const TS::Soup sphere = TS::uv_sphere(8, 12);
   TS::soup_detail::append(s, sphere, 10., 0., 0.);
   TS::soup_detail::append(s, sphere, 10., 0., 0.);
-  for(DS::Parameterization_method method : all_methods)
+  for(DS::Parameterization_method method : TS::all_parameterization_methods)
   {
     SCOPED_TRACE(DS::to_string(method));
     Mesh tm;
     TS::to_mesh(s, tm);
     Atlas a;
     ASSERT_NO_THROW(a = make_atlas(tm, DS::parameters::parameterization_method(method)));
-    expect_valid_atlas(tm, a);
+    expect_valid_atlas(tm, a, 512);
     expect_charts_within_components(tm, a);
   }
 }
