@@ -269,8 +269,8 @@ Atlas_quality atlas_quality(const TriangleMesh& tm, UVMap uv_map, FacePatchMap f
         }
 
   // Charts: ids, sizes, 3D and UV areas. The indexed mesh is normalized by
-  // a power of two (see normalize_coordinates); areas and lengths are
-  // rescaled to the input's units where they are reported.
+  // a power of two (see normalize_coordinates); only the seam length is
+  // reported in the input's units, every other measure is scale free.
   const std::vector<std::size_t> ids = internal::read_face_labels(face_handles, face_patch_map);
   const std::size_t charts = ids.empty() ? 0 : *std::max_element(ids.begin(), ids.end()) + 1;
   std::vector<std::size_t> chart_faces(charts, 0);
@@ -389,23 +389,8 @@ Atlas_quality atlas_quality(const TriangleMesh& tm, UVMap uv_map, FacePatchMap f
       if(!agree)
         seam += m.edge_length(f, i);
     }
-  // Undo the normalization: lengths scale like the square root of areas.
-  double input_area = 0;
-  {
-    const auto coordinates_of = internal::make_coordinates_reader(tm, np);
-    for(Index f = 0; f < F; ++f)
-    {
-      const auto a = coordinates_of(vertex_handles[m.corners[f][0]]);
-      const auto b = coordinates_of(vertex_handles[m.corners[f][1]]);
-      const auto c = coordinates_of(vertex_handles[m.corners[f][2]]);
-      const double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
-      const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
-      const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
-      input_area += 0.5 * std::sqrt(nx * nx + ny * ny + nz * nz);
-    }
-  }
   q.cut_length = total_3d > 0 ? seam / std::sqrt(total_3d) : 0.;
-  q.seam_length = total_3d > 0 ? seam * std::sqrt(input_area / total_3d) : 0.;
+  q.seam_length = seam / m.normalization_scale;  // back to the input's units
 
   if(resolution > 0)
     q.texel_overlaps = internal::count_texel_overlaps(uv, resolution);

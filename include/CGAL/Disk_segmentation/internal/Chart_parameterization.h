@@ -268,22 +268,19 @@ inline std::string parameterize_chart_with(const Indexed_triangle_mesh& m, Chart
       // coordinates start closer to ARAP; Tutte's map, which ignores the
       // geometry, is the start when near-degenerate 3D triangles make the
       // mean value map invalid.
-      std::string problem =
-        run_parameterizer(mesh, SMP::Mean_value_coordinates_parameterizer_3<Chart_mesh, Circle, Direct_solver>(), border, c);
-      if(problem.empty())
-      {
-        keep_winding(c);
-        problem = chart_uv_problem(c, c.uv, border_loop);
-      }
-      if(!problem.empty())
-      {
-        problem = run_parameterizer(mesh, SMP::Barycentric_mapping_parameterizer_3<Chart_mesh, Circle, Direct_solver>(),
-                                    border, c);
+      auto valid_start = [&](auto parameterizer) {
+        std::string problem = run_parameterizer(mesh, parameterizer, border, c);
         if(problem.empty())
         {
           keep_winding(c);
           problem = chart_uv_problem(c, c.uv, border_loop);
         }
+        return problem;
+      };
+      if(!valid_start(SMP::Mean_value_coordinates_parameterizer_3<Chart_mesh, Circle, Direct_solver>()).empty())
+      {
+        const std::string problem =
+          valid_start(SMP::Barycentric_mapping_parameterizer_3<Chart_mesh, Circle, Direct_solver>());
         if(!problem.empty())
           return "ARAP: no valid initialization (" + problem + ")";
       }

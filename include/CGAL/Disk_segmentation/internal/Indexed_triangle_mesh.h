@@ -46,6 +46,7 @@ struct Indexed_triangle_mesh
   std::vector<std::array<Index, 3> > corners;    // face -> vertices (ccw)
   std::vector<std::array<Index, 3> > neighbors;  // face -> face across edge (corner i, corner i+1)
   std::vector<std::array<double, 3> > points;    // vertex -> coordinates
+  double normalization_scale = 1;                // points = (input - center) * scale
 
   std::size_t number_of_faces() const { return corners.size(); }
   std::size_t number_of_vertices() const { return points.size(); }
@@ -237,6 +238,7 @@ inline void normalize_coordinates(Indexed_triangle_mesh& m)
   for(auto& p : m.points)
     for(int k = 0; k < 3; ++k)
       p[k] = (p[k] - center[k]) * scale;
+  m.normalization_scale = scale;
 }
 
 // Reads vertex coordinates as doubles through the vertex point map and the
