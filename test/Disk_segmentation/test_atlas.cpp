@@ -10,6 +10,7 @@
 
 #include <CGAL/Disk_segmentation.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Surface_mesh.h>
 
@@ -160,6 +161,59 @@ TEST(Atlas, DistortionSplittingOnlyCutsChartsThatAreTooDistorted)
   EXPECT_THROW(make_atlas(copy, DS::parameters::max_area_distortion(0.)), DS::Input_error);
 }
 
+TEST(Atlas, PatchesAboveTheSizeCapAreSplitBeforeParameterization)
+{
+  const double no_distortion_split = std::numeric_limits<double>::infinity();
+  Mesh tm = load("elephant.off");
+  Mesh capped_mesh = tm, capped_no_fallback_mesh = tm;
+  const std::size_t cap = 400;
+  const Atlas uncapped = make_atlas(tm, DS::parameters::max_area_distortion(no_distortion_split));
+  const Atlas capped = make_atlas(capped_mesh,
+                                  DS::parameters::max_area_distortion(no_distortion_split).max_chart_faces(cap));
+  const Atlas capped_no_fallback = make_atlas(
+    capped_no_fallback_mesh,
+    DS::parameters::max_area_distortion(no_distortion_split).max_chart_faces(cap).use_fallback(false));
+  expect_valid_atlas(capped_mesh, capped);
+  expect_valid_atlas(capped_no_fallback_mesh, capped_no_fallback);
+  ASSERT_GT(capped.report.parameterization.number_of_split_patches, 0u) << "elephant's charts exceed 400 faces";
+  // The cap holds with or without the fallback, counted from the patch map.
+  for(const Atlas* a : { &capped, &capped_no_fallback })
+  {
+    std::vector<std::size_t> faces_per_patch(a->report.number_of_charts, 0);
+    for(Mesh::Face_index f : tm.faces())
+      ++faces_per_patch.at(a->patch[f]);
+    EXPECT_LE(*std::max_element(faces_per_patch.begin(), faces_per_patch.end()), cap);
+  }
+  // The pieces come from the same segmentation.
+  EXPECT_TRUE(TS::refines(TS::patches_as_face_index_sets(capped_mesh, capped.patch),
+                          TS::patches_as_face_index_sets(tm, uncapped.patch)));
+  EXPECT_THROW(make_atlas(capped_mesh, DS::parameters::max_chart_faces(std::size_t(0))), DS::Input_error);
+}
+
+TEST(Atlas, SelfIntersectingSurfaceGivesAValidAtlas)
+{
+  // A spindle torus (minor radius above the major one): the tube passes
+  // through itself around the axis. The method only uses intrinsic
+  // distances and per-chart flattening, so the crossing does not matter.
+  const int n_major = 48, n_minor = 24;
+  TS::Soup soup = TS::torus(n_major, n_minor);
+  const double R = 0.6, r = 1.0;
+  for(std::size_t k = 0; k < soup.points.size(); ++k)
+  {
+    const double u = 2 * TS::soup_detail::pi() * double(k / n_minor) / n_major, v = 2 * TS::soup_detail::pi() * double(k % n_minor) / n_minor;
+    const double rho = R + r * std::cos(v);
+    soup.points[k] = {{ rho * std::cos(u), rho * std::sin(u), r * std::sin(v) }};
+  }
+  Mesh tm = make(soup);
+  ASSERT_TRUE(CGAL::Polygon_mesh_processing::does_self_intersect(tm)) << "the test mesh must cross itself";
+  for(DS::Parameterization_method method : TS::all_parameterization_methods)
+  {
+    Mesh copy = tm;
+    const Atlas a = make_atlas(copy, DS::parameters::parameterization_method(method));
+    expect_valid_atlas(copy, a);
+  }
+}
+
 TEST(Atlas, SameResultForAnyNumberOfThreads)
 {
   Mesh tm = load("elephant.off");
@@ -264,13 +318,14 @@ TEST(Atlas, SplittingAChartGivesValidDiskPieces)
   DS::internal::Indexed_triangle_mesh m;
   std::vector<Mesh::Face_index> face_handles;
   DS::internal::build_indexed_triangle_mesh(tm, DS::parameters::default_values(), m, face_handles);
-  DS::internal::Voronoi_fps fps(m);
+  DS::internal::Splitter splitter(m);
   std::vector<DS::internal::Index> all(m.number_of_faces());
   for(DS::internal::Index f = 0; f < all.size(); ++f) all[f] = f;
   std::vector<DS::internal::Chart> pieces;
   std::vector<DS::internal::Chart_outcome> outcomes;
-  DS::internal::split_and_parameterize(m, fps, all, DS::Parameterization_method::ARAP, pieces, outcomes,
-                                       DS::internal::Split_rule{ m, DS::default_max_area_distortion });
+  DS::internal::split_and_parameterize(m, splitter, all, DS::Parameterization_method::ARAP, true, pieces, outcomes,
+                                       DS::internal::Split_rule{ m, DS::default_max_area_distortion,
+                                                                 DS::default_max_chart_faces, true });
   ASSERT_GE(pieces.size(), 2u);
   std::vector<int> covered(m.number_of_faces(), 0);
   for(std::size_t i = 0; i < pieces.size(); ++i)

@@ -434,6 +434,19 @@ TEST(RandomMeshes, ThousandsOfTetrahedraEachGetTheirOwnCharts)
   EXPECT_GE(a.report.number_of_charts, 2u * 3000u) << "a closed tetrahedron needs two disks at least";
 }
 
+TEST(RandomMeshes, VeryHighGenusGivesValidAtlases)
+{
+  // Genus 60 with 10 seeds: most Voronoi cells hold several handles, so the
+  // recursive refinement does nearly all the work.
+  const int genus = 60;
+  Mesh tm;
+  TS::to_mesh(TS::genus_surface(genus, 1), tm);
+  ASSERT_EQ(TS::euler_characteristic_of(tm, faces(tm)), 2 - 2 * genus);
+  Atlas a;
+  ASSERT_NO_THROW(a = make_atlas(tm, DS::parameters::default_values()));
+  expect_valid_atlas(tm, a, 2048);
+}
+
 TEST(RandomMeshes, ThousandsOfSeparateTrianglesEachGetOneChart)
 {
   TS::Soup s;

@@ -55,7 +55,7 @@ struct Chart_report
   /// `true` if `used` differs from `requested` because the requested result was invalid.
   bool fallback = false;
   /// `true` if the chart is a piece of a patch that was split (no method gave a valid chart,
-  /// or its area distortion exceeded `max_area_distortion`).
+  /// its area distortion exceeded `max_area_distortion`, or it had more than `max_chart_faces` faces).
   bool split = false;
   /// `true` if the chart's UVs are valid (finite, no flipped or degenerate triangle, simple border).
   bool valid = false;
@@ -78,7 +78,7 @@ struct Parameterization_report
   std::vector<Chart_report> charts;
   /// Charts that needed a fallback method.
   std::size_t number_of_fallbacks = 0;
-  /// Patches split because no method gave a valid chart, or because of their area distortion.
+  /// Patches split because no method gave a valid chart, or because of their area distortion or size.
   std::size_t number_of_split_patches = 0;
   /// Charts left invalid (only possible with `use_fallback(false)`).
   std::size_t number_of_invalid_charts = 0;
@@ -107,6 +107,17 @@ constexpr Parameterization_method default_parameterization_method = Parameteriza
 /// paper's charts unchanged.
 constexpr double default_max_area_distortion = 1.0;
 
+/// \ingroup PkgDiskSegmentationRef
+/// The `max_chart_faces` of `parameterize_patches()` when none is given:
+/// patches of more than \f$ 2^{17} \f$ = 131,072 faces are split before
+/// they are parameterized. The time and memory of a chart's sparse
+/// factorization grow faster than its number of faces: on a 2.2M-face mesh
+/// this bound halves the parameterization time and keeps the peak memory of
+/// the whole pipeline under 0.9 GB, for 3 more charts than \f$ 2^{18} \f$
+/// (see the benchmark README). With the default 10 seeds, meshes below about
+/// 1M faces rarely have such patches.
+constexpr std::size_t default_max_chart_faces = std::size_t(1) << 17;
+
 namespace internal {
 
 struct Parameterization_settings
@@ -115,6 +126,7 @@ struct Parameterization_settings
   bool use_fallback, require_disks;
   unsigned int threads;
   double max_area_distortion;
+  std::size_t max_chart_faces;
 };
 
 // The named parameters of parameterize_patches(), checked.
@@ -133,6 +145,10 @@ Parameterization_settings parameterization_settings(const NamedParameters& np)
                                            default_max_area_distortion);
   if(!(s.max_area_distortion > 0))
     throw Input_error("max_area_distortion must be > 0 (infinity disables splitting)");
+  s.max_chart_faces = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::max_chart_faces),
+                                       default_max_chart_faces);
+  if(s.max_chart_faces < 1)
+    throw Input_error("max_chart_faces must be >= 1");
   return s;
 }
 
@@ -160,78 +176,96 @@ void for_each_index(std::size_t n, unsigned int threads, const Work& work)
     work(i);
 }
 
+// What splitting a chart needs: farthest-point sampling and the disk test.
+struct Splitter
+{
+  explicit Splitter(const Indexed_triangle_mesh& m) : fps(m), topology(m) {}
+  Voronoi_fps fps;
+  Region_topology topology;
+};
+
 // Splits a chart into the Voronoi cells of two seeds, refined to disks, and
-// parameterizes each piece on its own; a piece for which `needs_split`
-// still holds is split again. Pieces shrink at every split and a single
-// triangle is always kept, so the recursion ends.
+// parameterizes each piece on its own; a piece too large to parameterize, or
+// for which `needs_split` holds once parameterized, is split again. Pieces
+// shrink at every split and a single triangle is always kept, so the
+// recursion ends.
 template <typename NeedsSplit>
-void split_and_parameterize(const Indexed_triangle_mesh& m, Voronoi_fps& fps, const std::vector<Index>& faces,
-                            Parameterization_method requested, std::vector<Chart>& pieces,
+void split_and_parameterize(const Indexed_triangle_mesh& m, Splitter& splitter, const std::vector<Index>& faces,
+                            Parameterization_method requested, bool use_fallback, std::vector<Chart>& pieces,
                             std::vector<Chart_outcome>& outcomes, const NeedsSplit& needs_split)
 {
   if(faces.size() < 2)
     return;
-  fps.run(faces, 2);
+  splitter.fps.run(faces, 2);
   std::vector<std::vector<Index> > cells(2);
   for(Index f : faces)
-    cells[fps.cell(f)].push_back(f);
-  std::vector<Index> labels;
-  const std::size_t count = refine_regions(m, fps, cells, 5, labels);
-  std::vector<std::vector<Index> > parts(count);
-  for(Index f : faces)
-    parts[labels[f]].push_back(f);
+    cells[splitter.fps.cell(f)].push_back(f);
+  const std::vector<std::vector<Index> > parts =
+    refine_region_list(splitter.topology, splitter.fps, std::move(cells), 5);
   for(const std::vector<Index>& part : parts)
   {
+    if(needs_split.too_large(part.size()))
+    {
+      split_and_parameterize(m, splitter, part, requested, use_fallback, pieces, outcomes, needs_split);
+      continue;
+    }
     Chart c = make_chart(m, part);
-    const Chart_outcome outcome = parameterize_chart(m, c, requested, true);
+    const Chart_outcome outcome = parameterize_chart(m, c, requested, use_fallback);
     if(part.size() == 1 || !needs_split(c, outcome))
     {
       pieces.push_back(std::move(c));
       outcomes.push_back(outcome);
     }
     else
-      split_and_parameterize(m, fps, part, requested, pieces, outcomes, needs_split);
+      split_and_parameterize(m, splitter, part, requested, use_fallback, pieces, outcomes, needs_split);
   }
 }
 
-// One Voronoi_fps per thread (it keeps per-query scratch state), made on
-// first use.
-class Per_thread_voronoi_fps
+// One Splitter per thread (both members keep per-query scratch state the
+// size of the mesh), made on first use.
+class Per_thread_splitter
 {
 public:
-  explicit Per_thread_voronoi_fps(const Indexed_triangle_mesh& m) : m_(m) {}
+  explicit Per_thread_splitter(const Indexed_triangle_mesh& m) : m_(m) {}
 
-  Voronoi_fps& local()
+  Splitter& local()
   {
 #ifdef CGAL_LINKED_WITH_TBB
-    std::unique_ptr<Voronoi_fps>& fps = per_thread_.local();
+    std::unique_ptr<Splitter>& splitter = per_thread_.local();
 #else
-    std::unique_ptr<Voronoi_fps>& fps = single_;
+    std::unique_ptr<Splitter>& splitter = single_;
 #endif
-    if(!fps)
-      fps.reset(new Voronoi_fps(m_));
-    return *fps;
+    if(!splitter)
+      splitter.reset(new Splitter(m_));
+    return *splitter;
   }
 
 private:
   const Indexed_triangle_mesh& m_;
 #ifdef CGAL_LINKED_WITH_TBB
-  tbb::enumerable_thread_specific<std::unique_ptr<Voronoi_fps> > per_thread_;
+  tbb::enumerable_thread_specific<std::unique_ptr<Splitter> > per_thread_;
 #else
-  std::unique_ptr<Voronoi_fps> single_;
+  std::unique_ptr<Splitter> single_;
 #endif
 };
 
-// Whether a parameterized chart is split: when it is invalid, or when its
-// area distortion exceeds `max_area_distortion` and it is large enough for
-// pieces to help.
+// Whether a patch is split: before it is parameterized, when it has more
+// than `max_chart_faces` faces; after, with the fallback on, when its chart
+// is invalid or its area distortion exceeds `max_area_distortion` and it is
+// large enough for pieces to help.
 struct Split_rule
 {
   const Indexed_triangle_mesh& m;
   double max_area_distortion;
+  std::size_t max_chart_faces;
+  bool use_fallback;
+
+  bool too_large(std::size_t faces) const { return faces > max_chart_faces; }
 
   bool operator()(const Chart& c, const Chart_outcome& outcome) const
   {
+    if(!use_fallback)
+      return false;
     if(!outcome.valid)
       return true;
     return c.faces.size() >= smallest_chart_to_split && std::isfinite(max_area_distortion) &&
@@ -260,7 +294,9 @@ struct Split_rule
 /// patch ids (appended after the existing ones) in `face_patch_map`. Valid
 /// charts whose area distortion exceeds `max_area_distortion` are split the
 /// same way (the paper does not do this; it removes the few tube-like charts
-/// that no flattening can keep near isometric).
+/// that no flattening can keep near isometric). Patches with more than
+/// `max_chart_faces` faces are split the same way before they are
+/// parameterized, with or without the fallback.
 ///
 /// UVs are per corner: `uv_map[h]` is the UV of `target(h)` as seen from
 /// `face(h)`, so charts are cut along patch borders. Charts are not placed
@@ -299,6 +335,12 @@ struct Split_rule
 ///       with `use_fallback`}
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{`default_max_area_distortion` (1.0); infinity disables splitting}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{max_chart_faces}
+///     \cgalParamDescription{patches with more faces are split (recursively, in two) before they are
+///       parameterized, which bounds the memory of each chart's linear systems}
+///     \cgalParamType{`std::size_t`, at least 1}
+///     \cgalParamDefault{`default_max_chart_faces` (131,072)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{require_disk_patches}
 ///     \cgalParamDescription{when `false`, patches that are not topological disks are parameterized
@@ -385,19 +427,26 @@ Parameterization_report parameterize_patches(const TriangleMesh& tm,
   // Each task parameterizes one patch and, if needed, splits it (see
   // Split_rule); pieces are numbered after the parallel pass, in patch
   // order, so ids do not depend on scheduling.
-  const internal::Split_rule needs_split{ m, max_area_distortion };
+  const internal::Split_rule needs_split{ m, max_area_distortion, settings.max_chart_faces, use_fallback };
   std::vector<std::vector<internal::Chart> > pieces(number_of_patches);
   std::vector<std::vector<internal::Chart_outcome> > piece_outcomes(number_of_patches);
-  internal::Per_thread_voronoi_fps fps(m);
+  internal::Per_thread_splitter splitter(m);
   internal::Progress progress = internal::Progress::from(np);
   internal::for_each_index(number_of_patches, threads, [&](std::size_t i) {
     const std::size_t p = order[i];
+    if(needs_split.too_large(patch_faces[p].size()))
+    {
+      internal::split_and_parameterize(m, splitter.local(), patch_faces[p], method, use_fallback, pieces[p],
+                                       piece_outcomes[p], needs_split);
+      progress.step("parameterization", number_of_patches);
+      return;
+    }
     internal::Chart chart = internal::make_chart(m, patch_faces[p]);
     internal::Chart_outcome outcome = internal::parameterize_chart(m, chart, method, use_fallback);
-    if(use_fallback && chart.faces.size() >= 2 && needs_split(chart, outcome))
+    if(chart.faces.size() >= 2 && needs_split(chart, outcome))
     {
-      internal::split_and_parameterize(m, fps.local(), patch_faces[p], method, pieces[p], piece_outcomes[p],
-                                       needs_split);
+      internal::split_and_parameterize(m, splitter.local(), patch_faces[p], method, use_fallback, pieces[p],
+                                       piece_outcomes[p], needs_split);
       for(internal::Chart_outcome& o : piece_outcomes[p])
         o.problem = outcome.problem;
     }

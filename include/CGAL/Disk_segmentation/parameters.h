@@ -38,6 +38,7 @@ enum number_of_threads_t { number_of_threads };
 enum progress_callback_t { progress_callback };
 enum require_disk_patches_t { require_disk_patches };
 enum max_area_distortion_t { max_area_distortion };
+enum max_chart_faces_t { max_chart_faces };
 
 } // namespace internal_np
 
@@ -88,6 +89,7 @@ struct Named_function_parameters
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(progress_callback_t, progress_callback)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(require_disk_patches_t, require_disk_patches)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(max_area_distortion_t, max_area_distortion)
+  CGAL_DISK_SEGMENTATION_ADD_PARAMETER(max_chart_faces_t, max_chart_faces)
 #undef CGAL_DISK_SEGMENTATION_ADD_PARAMETER
 };
 
@@ -162,6 +164,9 @@ CGAL_DISK_SEGMENTATION_ADD_PARAMETER(require_disk_patches_t, require_disk_patche
 /// \ingroup PkgDiskSegmentationRef
 /// Charts whose mean area distortion exceeds this value are split (`double`).
 CGAL_DISK_SEGMENTATION_ADD_PARAMETER(max_area_distortion_t, max_area_distortion)
+/// \ingroup PkgDiskSegmentationRef
+/// Patches with more faces than this are split before they are parameterized (`std::size_t`).
+CGAL_DISK_SEGMENTATION_ADD_PARAMETER(max_chart_faces_t, max_chart_faces)
 #undef CGAL_DISK_SEGMENTATION_ADD_PARAMETER
 
 } // namespace parameters

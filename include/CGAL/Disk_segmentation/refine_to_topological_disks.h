@@ -15,6 +15,7 @@
 
 #include <boost/graph/graph_traits.hpp>
 
+#include <algorithm>
 #include <vector>
 
 namespace CGAL {
@@ -29,8 +30,10 @@ inline std::size_t checked_number_of_subsamples(std::size_t k)
 }
 
 // The paper's Algorithm 1 on an indexed mesh. `regions` lists the faces of
-// each region in increasing order; on return `labels` numbers the refined
-// regions canonically and the count is returned.
+// each region in increasing order (empty regions are ignored); returns the
+// refined regions, each in increasing order, sorted by smallest face (the
+// canonical numbering). Costs depend on the regions' sizes only, not on the
+// mesh's, so that splitting one chart of a large mesh stays cheap.
 //
 // Termination: a region that is a disk is final. A region of at most k faces
 // is split into single faces, which are disks. A region R of more than k
@@ -38,26 +41,19 @@ inline std::size_t checked_number_of_subsamples(std::size_t k)
 // each seed keeps at least itself, so every sub-region has fewer faces than
 // R. Sizes strictly decrease along every chain of re-sampling, so the
 // worklist empties after at most |R| - 1 splits below each region.
-inline std::size_t refine_regions(const Indexed_triangle_mesh& m,
-                                  Voronoi_fps& fps,
-                                  std::vector<std::vector<Index> > regions,
-                                  std::size_t k,
-                                  std::vector<Index>& labels)
+inline std::vector<std::vector<Index> > refine_region_list(Region_topology& topology,
+                                                           Voronoi_fps& fps,
+                                                           std::vector<std::vector<Index> > regions,
+                                                           std::size_t k)
 {
-  Region_topology topology(m);
-  labels.assign(m.number_of_faces(), no_index);
-  Index next_label = 0;
-  auto finalize = [&](const std::vector<Index>& region)
-  {
-    for(Index f : region) labels[f] = next_label;
-    ++next_label;
-  };
-
+  std::vector<std::vector<Index> > refined;
   std::vector<std::vector<Index> > worklist;
   for(std::vector<Index>& region : regions)
   {
+    if(region.empty())
+      continue;
     if(topology.is_disk(region))
-      finalize(region);
+      refined.push_back(std::move(region));
     else
       worklist.push_back(std::move(region));
   }
@@ -69,7 +65,7 @@ inline std::size_t refine_regions(const Indexed_triangle_mesh& m,
     if(region.size() <= k)
     {
       for(Index f : region)
-        finalize(std::vector<Index>(1, f));
+        refined.push_back(std::vector<Index>(1, f));
       continue;
     }
 
@@ -82,12 +78,31 @@ inline std::size_t refine_regions(const Indexed_triangle_mesh& m,
     {
       CGAL_assertion(!cell.empty() && cell.size() < region.size());
       if(topology.is_disk(cell))
-        finalize(cell);
+        refined.push_back(std::move(cell));
       else
         worklist.push_back(std::move(cell));
     }
   }
-  return make_canonical(labels);
+  std::sort(refined.begin(), refined.end(),
+            [](const std::vector<Index>& a, const std::vector<Index>& b) { return a.front() < b.front(); });
+  return refined;
+}
+
+// refine_region_list() as face labels of the whole mesh (faces outside
+// every region get `no_index`); returns the number of refined regions.
+inline std::size_t refine_regions(const Indexed_triangle_mesh& m,
+                                  Voronoi_fps& fps,
+                                  std::vector<std::vector<Index> > regions,
+                                  std::size_t k,
+                                  std::vector<Index>& labels)
+{
+  Region_topology topology(m);
+  const std::vector<std::vector<Index> > refined = refine_region_list(topology, fps, std::move(regions), k);
+  labels.assign(m.number_of_faces(), no_index);
+  for(std::size_t r = 0; r < refined.size(); ++r)
+    for(Index f : refined[r])
+      labels[f] = static_cast<Index>(r);
+  return refined.size();
 }
 
 } // namespace internal

@@ -36,11 +36,14 @@ std::vector<std::vector<Index> > group_faces_by_label(const std::vector<Label>& 
 
 // Renumbers labels 0..P-1 in order of each label's smallest face: the
 // canonical numbering, independent of how the labels were produced. Returns P.
+// Faces labeled `no_index` (outside every region) keep that label and are
+// not counted.
 inline std::size_t make_canonical(std::vector<Index>& labels)
 {
   std::unordered_map<Index, Index> canonical;
   for(Index& l : labels)
-    l = canonical.emplace(l, static_cast<Index>(canonical.size())).first->second;
+    if(l != no_index)
+      l = canonical.emplace(l, static_cast<Index>(canonical.size())).first->second;
   return canonical.size();
 }
 
