@@ -8,8 +8,15 @@
 //           [--report OUT.json] [--patch-ids FILE] [--colored FILE.ply]
 //           [--method arap|conformal|lscm|mvc|tutte] [--packer tight|grid]
 //           [--resolution 1024] [--padding 2] [-n 10] [-k 5]
-//           [--threshold 0.7624] [--max-distortion 1] [--threads 0]
+//           [--threshold 0.7624] [--max-distortion 1] [--max-chart-faces 131072]
+//           [--threads 0] [--repair] [--triangulate]
 //           [--no-fallback] [--quiet]
+//
+// Inputs are used as they are: a non-manifold, inconsistently oriented or
+// duplicated-face mesh is rejected with a message naming the first bad
+// element, unless --repair (CGAL's polygon soup repair and orientation)
+// and --triangulate (polygons to triangles) are given; outputs then follow
+// the repaired mesh's face order.
 //
 // Prints a one-line summary; on any error prints one line on stderr and
 // exits with status 1 (2 for bad command-line usage). Outputs are written
@@ -68,7 +75,8 @@ void write_patch_ids(std::ostream& out, const Mesh& mesh, const Patch_map& patch
 }
 
 nlohmann::json report_json(const std::string& input, const Mesh& mesh, const DS::Atlas_report& r,
-                           const std::string& method, const std::string& packer, double read_seconds)
+                           const std::string& method, const std::string& packer, double read_seconds,
+                           const disk_uv::Read_changes& changes)
 {
   nlohmann::json charts = nlohmann::json::array();
   for(const DS::Chart_report& c : r.parameterization.charts)
@@ -82,6 +90,12 @@ nlohmann::json report_json(const std::string& input, const Mesh& mesh, const DS:
     { "vertices", mesh.number_of_vertices() },
     { "method", method },
     { "packer", packer },
+    { "input_changes", { { "polygons_triangulated", changes.polygons_triangulated },
+                         { "fan_triangulations", changes.fan_triangulations },
+                         { "faces_added", changes.faces_added },
+                         { "faces_removed", changes.faces_removed },
+                         { "vertices_added", changes.vertices_added },
+                         { "vertices_removed", changes.vertices_removed } } },
     { "segmentation", { { "voronoi_cells", r.number_of_voronoi_cells },
                         { "refined_regions", r.number_of_refined_regions },
                         { "charts", r.number_of_charts } } },
@@ -137,8 +151,10 @@ int main(int argc, char** argv)
   std::size_t n = 10, k = 5;
   double threshold = DS::regular_polygon_threshold(5), padding = 2;
   double max_distortion = DS::default_max_area_distortion;
+  std::size_t max_chart_faces = DS::default_max_chart_faces;
   unsigned int resolution = 1024, threads = 0;
   bool no_fallback = false, quiet = false;
+  disk_uv::Read_options read_options;
   app.add_option("INPUT", input, "input triangle mesh (.off .obj .ply .stl .ts)")->required();
   app.add_option("-o,--obj", obj_path, "write the atlas as OBJ (per-corner vt, one group per chart)");
   app.add_option("--glb", glb_path, "write the atlas as binary glTF 2.0 (TEXCOORD_0)");
@@ -157,7 +173,13 @@ int main(int argc, char** argv)
   app.add_option("--threshold", threshold, "merge score threshold (eps_5 = 0.7624 by default)")->capture_default_str();
   app.add_option("--max-distortion", max_distortion,
                  "split charts whose mean |log(area ratio)| exceeds this (inf: never)")->capture_default_str();
+  app.add_option("--max-chart-faces", max_chart_faces,
+                 "split larger patches before parameterizing them (bounds memory)")->capture_default_str();
   app.add_option("--threads", threads, "maximum number of threads (0: all)")->capture_default_str();
+  app.add_flag("--repair", read_options.repair,
+               "merge duplicated vertices, drop duplicated and degenerate faces, orient the faces and "
+               "cut the mesh at non-manifold edges and vertices");
+  app.add_flag("--triangulate", read_options.triangulate, "triangulate faces with more than 3 vertices");
   app.add_flag("--no-fallback", no_fallback, "keep invalid charts (and report them) instead of redoing them");
   app.add_flag("-q,--quiet", quiet, "no progress display and no summary");
   try
@@ -184,7 +206,7 @@ int main(int argc, char** argv)
     CGAL::Real_timer timer;
     timer.start();
     Mesh mesh;
-    disk_uv::read_triangle_mesh(input, mesh);
+    const disk_uv::Read_changes changes = disk_uv::read_triangle_mesh(input, mesh, read_options);
     const double read_seconds = timer.time();
     Patch_map patch = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:patch", 0).first;
     UV_map uv = mesh.add_property_map<Mesh::Halfedge_index, Kernel::Point_2>("h:uv", Kernel::Point_2(0, 0)).first;
@@ -193,7 +215,7 @@ int main(int argc, char** argv)
       mesh, uv,
       DS::parameters::number_of_seeds(n).number_of_subsamples(k).merge_threshold(threshold)
         .parameterization_method(method).use_fallback(!no_fallback).max_area_distortion(max_distortion)
-        .packing_method(packer)
+        .max_chart_faces(max_chart_faces).packing_method(packer)
         .texture_resolution(resolution).padding_in_texels(padding).number_of_threads(threads)
         .face_patch_map(patch)
         .progress_callback(std::function<void(const std::string&, std::size_t, std::size_t)>(
@@ -214,9 +236,15 @@ int main(int argc, char** argv)
       disk_uv::write_file_atomically(colored_path, [&](std::ostream& o) { write_colored_ply(o, mesh, patch); });
     if(!report_path.empty())
       disk_uv::write_file_atomically(report_path, [&](std::ostream& o) {
-        o << report_json(input, mesh, report, method_name, packer_name, read_seconds).dump(2) << '\n';
+        o << report_json(input, mesh, report, method_name, packer_name, read_seconds, changes).dump(2) << '\n';
       });
 
+    if(!quiet && (changes.polygons_triangulated || changes.faces_removed || changes.vertices_added ||
+                  changes.vertices_removed))
+      std::printf("%s: input changed: %zu polygons triangulated (%zu as fans), %zu faces removed, "
+                  "%zu vertices removed, %zu vertices added\n",
+                  input.c_str(), changes.polygons_triangulated, changes.fan_triangulations, changes.faces_removed,
+                  changes.vertices_removed, changes.vertices_added);
     if(!quiet)
       std::printf("%s: %zu faces -> %zu charts (voronoi %zu, refined %zu), %s, %zu fallbacks, %zu invalid, "
                   "packing %.1f%%; time read %.3f s, segment %.3f s, parameterize %.3f s, pack %.3f s\n",

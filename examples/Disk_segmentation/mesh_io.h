@@ -9,16 +9,24 @@
 #define DISK_SEGMENTATION_EXAMPLES_MESH_IO_H
 
 #include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
+#include <istream>
 #include <functional>
+#include <limits>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -42,6 +50,24 @@ inline std::string lower_extension(const std::string& path)
   return ext;
 }
 
+// Names the first face that refers to a vertex the file does not have, or
+// the first vertex with a non-finite coordinate; empty if there is none.
+template <typename Point>
+std::string soup_reference_problem(const std::vector<Point>& points,
+                                   const std::vector<std::vector<std::size_t> >& polygons)
+{
+  for(std::size_t f = 0; f < polygons.size(); ++f)
+    for(std::size_t v : polygons[f])
+      if(v >= points.size())
+        return "face #" + std::to_string(f) + " refers to vertex #" + std::to_string(v) +
+               ", but the file has only " + std::to_string(points.size()) + " vertices";
+  for(std::size_t v = 0; v < points.size(); ++v)
+    if(!std::isfinite(CGAL::to_double(points[v].x())) || !std::isfinite(CGAL::to_double(points[v].y())) ||
+       !std::isfinite(CGAL::to_double(points[v].z())))
+      return "vertex #" + std::to_string(v) + " has a non-finite (NaN or infinite) coordinate";
+  return std::string();
+}
+
 // Names the first reason why the soup is not a manifold, consistently
 // oriented triangle mesh; empty if it is one.
 template <typename Point>
@@ -50,93 +76,289 @@ std::string triangle_soup_problem(const std::vector<Point>& points,
 {
   if(polygons.empty())
     return "the mesh has no face";
+  const std::string reference_problem = soup_reference_problem(points, polygons);
+  if(!reference_problem.empty())
+    return reference_problem;
   for(std::size_t f = 0; f < polygons.size(); ++f)
   {
     const auto& p = polygons[f];
     if(p.size() != 3)
       return "face #" + std::to_string(f) + " has " + std::to_string(p.size()) +
-             " vertices; only triangle meshes are supported (triangulate it first)";
-    for(std::size_t v : p)
-      if(v >= points.size())
-        return "face #" + std::to_string(f) + " refers to vertex #" + std::to_string(v) +
-               ", but the file has only " + std::to_string(points.size()) + " vertices";
+             " vertices; only triangle meshes are supported (--triangulate splits polygons)";
     if(p[0] == p[1] || p[1] == p[2] || p[2] == p[0])
       return "face #" + std::to_string(f) + " uses the same vertex twice";
   }
-  for(std::size_t v = 0; v < points.size(); ++v)
-    if(!std::isfinite(CGAL::to_double(points[v].x())) || !std::isfinite(CGAL::to_double(points[v].y())) ||
-       !std::isfinite(CGAL::to_double(points[v].z())))
-      return "vertex #" + std::to_string(v) + " has a non-finite (NaN or infinite) coordinate";
 
-  // Every directed edge as (smaller vertex, larger vertex, direction),
-  // sorted so that the uses of one undirected edge are adjacent.
-  std::vector<std::array<std::size_t, 3> > uses;
+  // Duplicated faces first: they would otherwise be reported as a
+  // non-manifold or inconsistently oriented edge.
+  {
+    std::vector<std::array<std::size_t, 4> > sorted_faces(polygons.size());
+    for(std::size_t f = 0; f < polygons.size(); ++f)
+    {
+      sorted_faces[f] = {{ polygons[f][0], polygons[f][1], polygons[f][2], f }};
+      std::sort(sorted_faces[f].begin(), sorted_faces[f].begin() + 3);
+    }
+    std::sort(sorted_faces.begin(), sorted_faces.end());
+    for(std::size_t i = 1; i < sorted_faces.size(); ++i)
+      if(std::equal(sorted_faces[i].begin(), sorted_faces[i].begin() + 3, sorted_faces[i - 1].begin()))
+        return "face #" + std::to_string(sorted_faces[i][3]) + " duplicates face #" +
+               std::to_string(sorted_faces[i - 1][3]) + " (same three vertices)";
+  }
+
+  // Every directed edge as (smaller vertex, larger vertex, corner of the
+  // smaller vertex, direction), sorted so that the uses of one undirected
+  // edge are adjacent. 32-bit fields: CGAL's own check (a map of edges) took
+  // 1 GB on a 2.2M-face mesh, this takes 16 bytes per corner.
+  struct Edge_use
+  {
+    std::uint32_t low, high, low_corner, direction;
+    bool operator<(const Edge_use& o) const
+    {
+      return std::tie(low, high, direction, low_corner) < std::tie(o.low, o.high, o.direction, o.low_corner);
+    }
+  };
+  if(points.size() >= (std::size_t(1) << 32) || 3 * polygons.size() >= (std::size_t(1) << 32))
+    return "the mesh is too large (more than 2^32 vertices or corners)";
+  std::vector<Edge_use> uses;
   uses.reserve(3 * polygons.size());
-  for(const auto& p : polygons)
+  for(std::size_t f = 0; f < polygons.size(); ++f)
     for(int i = 0; i < 3; ++i)
     {
-      const std::size_t a = p[i], b = p[(i + 1) % 3];
-      uses.push_back({{ (std::min)(a, b), (std::max)(a, b), std::size_t(a < b ? 0 : 1) }});
+      const std::size_t a = polygons[f][i], b = polygons[f][(i + 1) % 3];
+      const std::size_t low_corner = 3 * f + (a < b ? i : (i + 1) % 3);
+      uses.push_back({ std::uint32_t((std::min)(a, b)), std::uint32_t((std::max)(a, b)),
+                       std::uint32_t(low_corner), std::uint32_t(a < b ? 0 : 1) });
     }
   std::sort(uses.begin(), uses.end());
+
+  // Corners of one vertex joined across the edges they share; a vertex is
+  // manifold when all its corners end up in one fan.
+  std::vector<std::uint32_t> fan(3 * polygons.size());
+  for(std::size_t c = 0; c < fan.size(); ++c)
+    fan[c] = std::uint32_t(c);
+  auto find = [&fan](std::uint32_t c) {
+    while(fan[c] != c)
+      c = fan[c] = fan[fan[c]];
+    return c;
+  };
+  auto join = [&](std::uint32_t c, std::uint32_t d) { fan[find(c)] = find(d); };
+  auto corner_of = [&polygons](std::uint32_t face, std::size_t v) {
+    for(std::uint32_t i = 0; i < 3; ++i)
+      if(polygons[face][i] == v)
+        return 3 * face + i;
+    return 3 * face;
+  };
+
   for(std::size_t i = 0; i < uses.size();)
   {
     std::size_t j = i;
     std::array<std::size_t, 2> per_direction{{ 0, 0 }};
-    while(j < uses.size() && uses[j][0] == uses[i][0] && uses[j][1] == uses[i][1])
-      ++per_direction[uses[j++][2]];
+    while(j < uses.size() && uses[j].low == uses[i].low && uses[j].high == uses[i].high)
+      ++per_direction[uses[j++].direction];
     const std::size_t count = j - i;
-    auto name = [&] { return "edge (" + std::to_string(uses[i][0]) + ", " + std::to_string(uses[i][1]) + ")"; };
+    auto name = [&] { return "edge (" + std::to_string(uses[i].low) + ", " + std::to_string(uses[i].high) + ")"; };
     if(count > 2)
       return "the mesh is not manifold: " + name() + " is shared by " + std::to_string(count) + " faces";
     if(per_direction[0] > 1 || per_direction[1] > 1)
       return "the faces on both sides of " + name() + " are oriented inconsistently";
+    if(count == 2)
+    {
+      const std::uint32_t f = uses[i].low_corner / 3, g = uses[i + 1].low_corner / 3;
+      join(uses[i].low_corner, uses[i + 1].low_corner);
+      join(corner_of(f, uses[i].high), corner_of(g, uses[i].high));
+    }
     i = j;
   }
-  if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons))
-    return "the mesh is not manifold: the faces around some vertex form more than one fan";
+  std::vector<std::uint32_t> first_fan(points.size(), std::numeric_limits<std::uint32_t>::max());
+  for(std::uint32_t c = 0; c < fan.size(); ++c)
+  {
+    const std::size_t v = polygons[c / 3][c % 3];
+    const std::uint32_t root = find(c);
+    if(first_fan[v] == std::numeric_limits<std::uint32_t>::max())
+      first_fan[v] = root;
+    else if(first_fan[v] != root)
+      return "the mesh is not manifold: the faces around vertex #" + std::to_string(v) +
+             " form more than one fan (a pinched vertex)";
+  }
   return std::string();
 }
 
+// What the reader may change in a mesh before checking it: both are off
+// by default, so that a bad mesh is named rather than silently altered.
+struct Read_options
+{
+  // CGAL's soup repair: merges duplicated points, removes degenerate and
+  // duplicated faces and isolated points, then orients the faces
+  // consistently and duplicates the points of non-manifold edges and
+  // vertices (the mesh is cut there).
+  bool repair = false;
+  // Polygons of 4 or more vertices are triangulated (constrained Delaunay
+  // in the polygon's plane; a fan if that fails).
+  bool triangulate = false;
+};
+
+// What reading changed; all zero when the file was used as it is.
+struct Read_changes
+{
+  std::size_t polygons_triangulated = 0;
+  std::size_t fan_triangulations = 0;  // polygons the planar triangulation failed on
+  std::size_t faces_removed = 0;       // by the repair (net of added faces)
+  std::size_t faces_added = 0;         // by the triangulation
+  std::size_t vertices_removed = 0;    // merged or isolated, net of the ones the repair duplicated
+  std::size_t vertices_added = 0;      // duplicated by the repair to make the mesh manifold
+};
+
+// The triangles of one polygon, as indices into `points`.
+template <typename Point>
+std::vector<std::vector<std::size_t> > triangulate_polygon(const std::vector<Point>& points,
+                                                           const std::vector<std::size_t>& polygon,
+                                                           bool& used_fan)
+{
+  typedef CGAL::Surface_mesh<Point> Polygon_mesh;
+  std::vector<std::vector<std::size_t> > triangles;
+  used_fan = false;
+  Polygon_mesh pm;
+  std::vector<typename Polygon_mesh::Vertex_index> corners;
+  for(std::size_t v : polygon)
+    corners.push_back(pm.add_vertex(points[v]));
+  bool ok = false;
+  try
+  {
+    ok = pm.add_face(corners) != Polygon_mesh::null_face() &&
+         CGAL::Polygon_mesh_processing::triangulate_faces(pm);
+  }
+  catch(const std::exception&)
+  {
+    ok = false;
+  }
+  if(ok)
+    for(typename Polygon_mesh::Face_index f : pm.faces())
+    {
+      std::vector<std::size_t> t;
+      for(typename Polygon_mesh::Vertex_index v : CGAL::vertices_around_face(pm.halfedge(f), pm))
+        t.push_back(polygon[std::size_t(v)]);
+      triangles.push_back(t);
+    }
+  else
+  {
+    used_fan = true;
+    for(std::size_t i = 1; i + 1 < polygon.size(); ++i)
+      triangles.push_back({ polygon[0], polygon[i], polygon[i + 1] });
+  }
+  return triangles;
+}
+
+// Reads a polygon soup in the format named by `ext` (off, obj, ply, stl, ts)
+// from `in`, opened in binary mode. Throws Tool_error naming `name`.
+template <typename Point>
+void read_polygon_soup_from(std::istream& in, const std::string& ext, const std::string& name,
+                            std::vector<Point>& points, std::vector<std::vector<std::size_t> >& polygons)
+{
+  bool ok = false;
+  try
+  {
+    if(ext == "off") ok = CGAL::IO::read_OFF(in, points, polygons);
+    else if(ext == "obj") ok = CGAL::IO::read_OBJ(in, points, polygons);
+    else if(ext == "ply") ok = CGAL::IO::read_PLY(in, points, polygons);
+    else if(ext == "stl") ok = CGAL::IO::read_STL(in, points, polygons);
+    else if(ext == "ts") ok = CGAL::IO::read_GOCAD(in, points, polygons);
+    else
+      throw Tool_error("'" + name + "': unknown mesh format '" + ext + "' (supported: .off .obj .ply .stl .ts)");
+  }
+  catch(const Tool_error&)
+  {
+    throw;
+  }
+  catch(const std::exception& e)
+  {
+    throw Tool_error("'" + name + "' is not a valid ." + ext + " file (" + e.what() + ")");
+  }
+  if(!ok)
+    throw Tool_error("'" + name + "' is not a valid ." + ext + " file (it may be empty or truncated)");
+}
+
+// Applies `options` to a soup just read, then checks that it is a manifold,
+// consistently oriented triangle mesh. Throws Tool_error naming `name`.
+template <typename Point>
+Read_changes prepare_triangle_soup(std::vector<Point>& points, std::vector<std::vector<std::size_t> >& polygons,
+                                   const Read_options& options, const std::string& name)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  Read_changes changes;
+  // Repair and triangulation compute with the coordinates: they must be finite.
+  const std::string reference_problem = soup_reference_problem(points, polygons);
+  if(!reference_problem.empty())
+    throw Tool_error("'" + name + "': " + reference_problem);
+
+  if(options.repair)
+  {
+    const std::size_t faces = polygons.size(), vertices = points.size();
+    PMP::repair_polygon_soup(points, polygons);
+    const std::size_t merged_vertices = points.size();
+    PMP::orient_polygon_soup(points, polygons);
+    changes.faces_removed = faces - polygons.size();
+    changes.vertices_removed = vertices - merged_vertices;
+    changes.vertices_added = points.size() - merged_vertices;
+  }
+  if(options.triangulate)
+  {
+    std::vector<std::vector<std::size_t> > triangles;
+    triangles.reserve(polygons.size());
+    for(std::vector<std::size_t>& polygon : polygons)
+    {
+      if(polygon.size() <= 3)
+      {
+        triangles.push_back(std::move(polygon));
+        continue;
+      }
+      bool used_fan = false;
+      for(std::vector<std::size_t>& t : triangulate_polygon(points, polygon, used_fan))
+        triangles.push_back(std::move(t));
+      ++changes.polygons_triangulated;
+      changes.fan_triangulations += used_fan ? 1 : 0;
+    }
+    changes.faces_added = triangles.size() - polygons.size();
+    polygons.swap(triangles);
+  }
+
+  const std::string problem = triangle_soup_problem(points, polygons);
+  if(!problem.empty())
+  {
+    std::string hint;
+    if(!options.repair && problem.find("manifold") != std::string::npos)
+      hint = " (--repair cuts the mesh there)";
+    else if(!options.repair && (problem.find("duplicates") != std::string::npos ||
+                                problem.find("oriented") != std::string::npos ||
+                                problem.find("twice") != std::string::npos))
+      hint = " (--repair fixes this)";
+    throw Tool_error("'" + name + "': " + problem + hint);
+  }
+  return changes;
+}
+
 // Reads a triangle mesh in any format CGAL reads (OFF, OBJ, PLY, STL, TS),
-// keeping the file's face and vertex order. Throws Tool_error with a one-line
-// message naming the problem.
+// keeping the file's face and vertex order unless `options` change the
+// mesh. Throws Tool_error with a one-line message naming the problem.
 template <typename Mesh>
-void read_triangle_mesh(const std::string& path, Mesh& mesh)
+Read_changes read_triangle_mesh(const std::string& path, Mesh& mesh, const Read_options& options = Read_options())
 {
   typedef typename boost::property_traits<
     typename boost::property_map<Mesh, CGAL::vertex_point_t>::type>::value_type Point;
 
-  std::ifstream probe(path, std::ios::binary);
-  if(!probe)
-    throw Tool_error("cannot open '" + path + "' for reading");
-  probe.close();
-
   const std::string ext = lower_extension(path);
+  std::ifstream in(path, std::ios::binary);
+  if(!in)
+    throw Tool_error("cannot open '" + path + "' for reading");
   if(ext != "off" && ext != "obj" && ext != "ply" && ext != "stl" && ext != "ts")
-    throw Tool_error("'" + path + "': unknown mesh format '" + ext +
-                     "' (supported: .off .obj .ply .stl .ts)");
+    throw Tool_error("'" + path + "': unknown mesh format '" + ext + "' (supported: .off .obj .ply .stl .ts)");
 
   std::vector<Point> points;
   std::vector<std::vector<std::size_t> > polygons;
-  bool ok = false;
-  try
-  {
-    ok = CGAL::IO::read_polygon_soup(path, points, polygons);
-  }
-  catch(const std::exception& e)
-  {
-    throw Tool_error("'" + path + "' is not a valid ." + ext + " file (" + e.what() + ")");
-  }
-  if(!ok)
-    throw Tool_error("'" + path + "' is not a valid ." + ext + " file (it may be empty or truncated)");
-
-  const std::string problem = triangle_soup_problem(points, polygons);
-  if(!problem.empty())
-    throw Tool_error("'" + path + "': " + problem);
-
+  read_polygon_soup_from(in, ext, path, points, polygons);
+  const Read_changes changes = prepare_triangle_soup(points, polygons, options, path);
   mesh.clear();
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+  return changes;
 }
 
 // Writes `path` through a temporary file in the same folder renamed at the

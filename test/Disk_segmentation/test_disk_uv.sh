@@ -91,6 +91,52 @@ expect_error 2 "" "$data/elephant.off" --no-such-option
 "$tool" "$work/nan.off" > /dev/null 2> "$work/err.txt"
 [ $? -eq 1 ] && grep -qiE "non-finite|not a valid" "$work/err.txt" && pass || fail "NaN input: $(cat "$work/err.txt")"
 
+expect_error 1 "max_chart_faces" "$data/elephant.off" --max-chart-faces 0
+# A face listed twice, inside a two-face strip.
+printf 'OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 2 1 3\n3 0 1 2\n' > "$work/duplicated_face.off"
+expect_error 1 "face #2 duplicates face #0" "$work/duplicated_face.off"
+expect_error 1 "vertex #0 form more than one fan" "$work/pinched.off"
+
+# --- repairs on request: each bad mesh above becomes a valid atlas, and
+# every output follows the repaired mesh (one patch id per output face).
+expect_repaired() { # expected_faces file options...
+  local expected=$1 file=$2
+  shift 2
+  rm -f "$work/r_ids.txt" "$work/r.obj" "$work/r.json"
+  if ! "$tool" "$file" "$@" --patch-ids "$work/r_ids.txt" -o "$work/r.obj" --report "$work/r.json" \
+       > "$work/out.txt" 2> "$work/err.txt"; then
+    fail "'$file $*' failed: $(cat "$work/err.txt")"; return
+  fi
+  local faces
+  faces=$(grep -c '^f ' "$work/r.obj")
+  if [ "$faces" -ne "$expected" ]; then fail "'$file $*': $faces faces, expected $expected"; return; fi
+  if [ "$(wc -l < "$work/r_ids.txt")" -ne "$faces" ]; then fail "'$file $*': patch ids do not match the faces"; return; fi
+  if ! grep -q '"invalid_charts": 0' "$work/r.json"; then fail "'$file $*': invalid charts"; return; fi
+  pass
+}
+expect_repaired 2 "$work/duplicated_face.off" --repair
+grep -q '"faces_removed": 1' "$work/r.json" && pass || fail "report does not count the removed duplicate"
+expect_repaired 3 "$work/nonmanifold_edge.off" --repair
+grep -q '"vertices_added": 0' "$work/r.json" && fail "cutting the non-manifold edge added no vertex" || pass
+expect_repaired 2 "$work/pinched.off" --repair
+expect_repaired 2 "$work/flipped.off" --repair
+expect_repaired 2 "$work/quad.off" --triangulate
+# An L-shaped hexagon: a fan from its reflex corner's neighbour would leave
+# the polygon; the planar triangulation stays inside it.
+printf 'OFF\n6 1 0\n0 0 0\n2 0 0\n2 1 0\n1 1 0\n1 2 0\n0 2 0\n6 0 1 2 3 4 5\n' > "$work/l_shape.off"
+expect_repaired 4 "$work/l_shape.off" --triangulate
+grep -q '"fan_triangulations": 0' "$work/r.json" && pass || fail "the L-shaped hexagon fell back to a fan"
+# A cube of quads, closed: 12 triangles after triangulation.
+printf 'OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n' > "$work/cube.off"
+expect_repaired 12 "$work/cube.off" --triangulate
+expect_repaired 12 "$work/cube.off" --triangulate --repair
+# A cap on chart size: no chart above it, every chart still valid.
+"$tool" "$data/elephant.off" --max-chart-faces 300 --patch-ids "$work/cap_ids.txt" --report "$work/cap.json" \
+  > /dev/null 2> "$work/err.txt" || fail "capped run failed: $(cat "$work/err.txt")"
+largest=$(sort -n "$work/cap_ids.txt" | uniq -c | sort -n | tail -1 | awk '{print $1}')
+[ "$largest" -le 300 ] && pass || fail "a chart has $largest faces, above the cap of 300"
+grep -q '"invalid_charts": 0' "$work/cap.json" && pass || fail "capped run has invalid charts"
+
 # --- the input is never overwritten
 cp "$data/elephant.off" "$work/keep.off"
 "$tool" "$work/keep.off" --colored "$work/keep.off" > /dev/null 2> "$work/err.txt"
