@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages the project needs, only those missing.
+# Installs the Debian 12 packages the project needs, only those missing,
+# plus any package named as an argument (scripts/run_fuzzer.sh adds clang).
 # Needs root (or sudo) when something is missing; does nothing otherwise.
 set -euo pipefail
 
@@ -9,6 +10,7 @@ packages=(
   libgtest-dev libbenchmark-dev
   libcli11-dev nlohmann-json3-dev libtinygltf-dev libstb-dev pkg-config
   doxygen graphviz
+  "$@"
 )
 
 missing=()

@@ -16,6 +16,8 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
+#include <cctype>
+#include <charconv>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -26,6 +28,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -248,6 +251,149 @@ std::vector<std::vector<std::size_t> > triangulate_polygon(const std::vector<Poi
   return triangles;
 }
 
+namespace internal {
+
+// Splits `line` at blanks, dropping a '#' comment.
+inline void split_tokens(const std::string& line, std::vector<std::string_view>& tokens)
+{
+  tokens.clear();
+  const std::size_t end = (std::min)(line.find('#'), line.size());
+  std::size_t i = 0;
+  while(i < end)
+  {
+    while(i < end && std::isspace(static_cast<unsigned char>(line[i])))
+      ++i;
+    const std::size_t start = i;
+    while(i < end && !std::isspace(static_cast<unsigned char>(line[i])))
+      ++i;
+    if(i > start)
+      tokens.emplace_back(line.data() + start, i - start);
+  }
+}
+
+inline bool parse_number(std::string_view token, double& value)
+{
+  const char* first = token.data();
+  if(!token.empty() && token[0] == '+')
+    ++first;
+  const auto result = std::from_chars(first, token.data() + token.size(), value);
+  return result.ec == std::errc() && result.ptr == token.data() + token.size();
+}
+
+inline bool parse_index(std::string_view token, std::size_t& value)
+{
+  unsigned long long v = 0;
+  const auto result = std::from_chars(token.data(), token.data() + token.size(), v);
+  value = static_cast<std::size_t>(v);
+  return result.ec == std::errc() && result.ptr == token.data() + token.size();
+}
+
+} // namespace internal
+
+// Reads an ASCII OFF file (OFF, COFF, NOFF, CNOFF, STOFF...: the values
+// after a vertex's three coordinates and after a face's indices, such as
+// colors and normals, are ignored), one vertex or face per line. Our own
+// reader: CGAL 5.5's converts a negative face size to an unsigned integer
+// (undefined behavior), and this one is about five times faster.
+template <typename Point>
+void read_OFF_soup(std::istream& in, const std::string& name, std::vector<Point>& points,
+                   std::vector<std::vector<std::size_t> >& polygons)
+{
+  std::string line;
+  std::vector<std::string_view> tokens;
+  std::size_t line_number = 0;
+  auto fail = [&](const std::string& why) {
+    throw Tool_error("'" + name + "' is not a valid .off file (line " + std::to_string(line_number) + ": " + why + ")");
+  };
+  // The next line with a token; false at the end of the file.
+  auto next_tokens = [&]() {
+    while(std::getline(in, line))
+    {
+      ++line_number;
+      internal::split_tokens(line, tokens);
+      if(!tokens.empty())
+        return true;
+    }
+    return false;
+  };
+
+  if(!next_tokens())
+    throw Tool_error("'" + name + "' is not a valid .off file (it is empty)");
+  const std::string_view keyword = tokens[0];
+  if(keyword.size() < 3 || keyword.substr(keyword.size() - 3) != "OFF")
+    fail("the file does not start with an OFF keyword");
+  if(keyword.find_first_of("4n") != std::string_view::npos)  // 4OFF, nOFF: other dimensions
+    fail("only 3D OFF files are supported");
+  std::size_t first_count = 1;
+  if(tokens.size() >= 2 && tokens[1] == "BINARY")
+    fail("binary OFF is not supported; convert it to ASCII");
+  if(tokens.size() == 1)
+  {
+    if(!next_tokens())
+      fail("the vertex and face counts are missing");
+    first_count = 0;
+  }
+  std::size_t number_of_vertices = 0, number_of_faces = 0;
+  if(tokens.size() < first_count + 2 || !internal::parse_index(tokens[first_count], number_of_vertices) ||
+     !internal::parse_index(tokens[first_count + 1], number_of_faces))
+    fail("expected the numbers of vertices and faces");
+
+  // Counts are only trusted as far as the file backs them.
+  const std::size_t reserve_limit = std::size_t(1) << 20;
+  points.clear();
+  polygons.clear();
+  points.reserve((std::min)(number_of_vertices, reserve_limit));
+  polygons.reserve((std::min)(number_of_faces, reserve_limit));
+  double xyz[3];
+  for(std::size_t v = 0; v < number_of_vertices; ++v)
+  {
+    if(!next_tokens())
+      fail("the file ends after " + std::to_string(v) + " of its " + std::to_string(number_of_vertices) +
+           " vertices");
+    if(tokens.size() < 3 || !internal::parse_number(tokens[0], xyz[0]) || !internal::parse_number(tokens[1], xyz[1]) ||
+       !internal::parse_number(tokens[2], xyz[2]))
+      fail("vertex #" + std::to_string(v) + " does not start with three numbers");
+    points.emplace_back(xyz[0], xyz[1], xyz[2]);
+  }
+  for(std::size_t f = 0; f < number_of_faces; ++f)
+  {
+    if(!next_tokens())
+      fail("the file ends after " + std::to_string(f) + " of its " + std::to_string(number_of_faces) + " faces");
+    std::size_t size = 0;
+    if(!internal::parse_index(tokens[0], size) || size > tokens.size() - 1)
+      fail("face #" + std::to_string(f) + " does not start with its number of vertices followed by as many indices");
+    std::vector<std::size_t> polygon(size);
+    for(std::size_t i = 0; i < size; ++i)
+      if(!internal::parse_index(tokens[i + 1], polygon[i]))
+        fail("face #" + std::to_string(f) + " has an index that is not a non-negative integer");
+    polygons.push_back(std::move(polygon));
+  }
+}
+
+// CGAL 5.5's PLY reader dereferences a missing element when a `property`
+// line comes before any `element` line; such headers are refused here.
+inline void check_PLY_header(std::istream& in, const std::string& name)
+{
+  const std::istream::pos_type start = in.tellg();
+  std::string line;
+  std::vector<std::string_view> tokens;
+  bool element_seen = false;
+  while(std::getline(in, line))
+  {
+    internal::split_tokens(line, tokens);
+    if(tokens.empty())
+      continue;
+    if(tokens[0] == "end_header")
+      break;
+    if(tokens[0] == "element")
+      element_seen = true;
+    else if(tokens[0] == "property" && !element_seen)
+      throw Tool_error("'" + name + "' is not a valid .ply file (a property comes before any element)");
+  }
+  in.clear();
+  in.seekg(start);
+}
+
 // Reads a polygon soup in the format named by `ext` (off, obj, ply, stl, ts)
 // from `in`, opened in binary mode. Throws Tool_error naming `name`.
 template <typename Point>
@@ -257,9 +403,17 @@ void read_polygon_soup_from(std::istream& in, const std::string& ext, const std:
   bool ok = false;
   try
   {
-    if(ext == "off") ok = CGAL::IO::read_OFF(in, points, polygons);
+    if(ext == "off")
+    {
+      read_OFF_soup(in, name, points, polygons);
+      ok = true;
+    }
     else if(ext == "obj") ok = CGAL::IO::read_OBJ(in, points, polygons);
-    else if(ext == "ply") ok = CGAL::IO::read_PLY(in, points, polygons);
+    else if(ext == "ply")
+    {
+      check_PLY_header(in, name);
+      ok = CGAL::IO::read_PLY(in, points, polygons);
+    }
     else if(ext == "stl") ok = CGAL::IO::read_STL(in, points, polygons);
     else if(ext == "ts") ok = CGAL::IO::read_GOCAD(in, points, polygons);
     else

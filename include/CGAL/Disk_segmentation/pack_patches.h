@@ -221,15 +221,18 @@ void collect_charts(const TriangleMesh& tm, const FacePatchMap& face_patch_map, 
       throw Input_error("pack_patches: " + patch_name(p) + " has a non-finite 3D area");
     total_surface_area += charts.surface_area[p];
   }
-  // A chart made of degenerate faces has no 3D area; at one texel density
-  // it would shrink to a point. It gets the footprint of a chart of a
-  // millionth of the mean chart area instead (or its UV area, if the whole
-  // mesh is degenerate), so that it stays a valid triangle set.
+  // At one texel density, a chart of degenerate faces would shrink to a
+  // point, and one 1e-60 times smaller than the others (fuzzed coordinates)
+  // below what doubles resolve. Charts under a millionth of the mean chart
+  // area get that footprint instead (their UV area if the whole mesh is
+  // degenerate), so that they stay valid triangle sets.
   if(with_surface_area)
+  {
+    const double floor_area = 1e-6 * total_surface_area / double(number_of_patches);
     for(std::size_t p = 0; p < number_of_patches; ++p)
-      if(!(charts.surface_area[p] > 0.))
-        charts.surface_area[p] = total_surface_area > 0. ? 1e-6 * total_surface_area / double(number_of_patches)
-                                                         : charts.uv_area[p];
+      if(!(charts.surface_area[p] > 0.) || charts.surface_area[p] < floor_area)
+        charts.surface_area[p] = floor_area > 0. ? floor_area : charts.uv_area[p];
+  }
 }
 
 // Chooses every chart's frame and boxes the chart in it. The rotation is
@@ -449,8 +452,9 @@ std::vector<Chart_similarity> grid_layout(const Chart_set<TriangleMesh>& charts,
 ///         patch has a zero, negative or non-finite UV area (or, for `TIGHT`,
 ///         a non-finite 3D area), or the padding leaves no room for all
 ///         charts. `uv_map` is not written then. A `TIGHT` chart whose 3D area
-///         is zero (degenerate faces) is not an error: it is given the size of
-///         a chart of a millionth of the mean chart area.
+///         is zero (degenerate faces) or below a millionth of the mean chart
+///         area is not an error: it is given the size of a chart of a
+///         millionth of the mean chart area.
 template <typename TriangleMesh, typename FacePatchMap, typename UVMap,
           typename NamedParameters = parameters::Default_named_parameters>
 Packing_report pack_patches(const TriangleMesh& tm,

@@ -91,11 +91,31 @@ inline std::string chart_uv_problem(const Chart& c, const std::vector<std::array
     areas[t] = 0.5 * ((b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]));
     total += areas[t];
   }
-  // Triangles too thin to rasterize or to invert in a texture lookup.
+  // Triangles too thin to rasterize or to invert in a texture lookup; and
+  // needles whose height is under 1e-10 of the chart's size, which packing
+  // (a similarity rounded to doubles in [0, 1]) would flatten to a line.
   const double mean = total / static_cast<double>(c.triangles.size());
-  for(double a : areas)
-    if(!(a > 1e-12 * mean))
+  double xmin = uv[0][0], xmax = uv[0][0], ymin = uv[0][1], ymax = uv[0][1];
+  for(const auto& u : uv)
+  {
+    xmin = (std::min)(xmin, u[0]); xmax = (std::max)(xmax, u[0]);
+    ymin = (std::min)(ymin, u[1]); ymax = (std::max)(ymax, u[1]);
+  }
+  const double chart_size = std::hypot(xmax - xmin, ymax - ymin);
+  for(std::size_t t = 0; t < c.triangles.size(); ++t)
+  {
+    if(!(areas[t] > 1e-12 * mean))
       return "degenerate UV triangle";
+    double longest = 0;
+    for(int i = 0; i < 3; ++i)
+    {
+      const auto& a = uv[c.triangles[t][i]];
+      const auto& b = uv[c.triangles[t][(i + 1) % 3]];
+      longest = (std::max)(longest, std::hypot(b[0] - a[0], b[1] - a[1]));
+    }
+    if(!(2 * areas[t] > 1e-10 * chart_size * longest))
+      return "degenerate UV triangle";
+  }
 
   std::vector<Point_2> polygon;
   polygon.reserve(border_loop.size());
@@ -239,11 +259,14 @@ inline std::string parameterize_chart_with(const Indexed_triangle_mesh& m, Chart
     c.uv[0] = {{ 0., 0. }};
     c.uv[1] = {{ l1, 0. }};
     c.uv[2] = {{ x, y }};
-    // A degenerate face (collinear or coincident corners) has no isometric
-    // layout; an equilateral triangle keeps the chart valid.
+    // A degenerate face (collinear or coincident corners), or a needle whose
+    // smallest height is under 1e-6 of its longest side, has no isometric
+    // layout that survives packing (its corners would round to a line); an
+    // equilateral triangle keeps the chart valid.
     const double longest = (std::max)(l1, (std::max)(Indexed_triangle_mesh::distance(p1, p2),
                                                      Indexed_triangle_mesh::distance(p2, p0)));
-    if(!(y > 1e-6 * longest))
+    const double smallest_height = longest > 0 ? l1 * y / longest : 0.;
+    if(!(smallest_height > 1e-6 * longest))
     {
       const double side = longest > 0 ? longest : 1.;
       c.uv[1] = {{ side, 0. }};
