@@ -118,6 +118,11 @@ Packing_point to_packing_point(const UVPoint& p)
   return { CGAL::to_double(p.x()), CGAL::to_double(p.y()) };
 }
 
+inline Packing_point relative_to(const Packing_point& p, const Packing_point& origin)
+{
+  return { p.x - origin.x, p.y - origin.y };
+}
+
 inline std::string patch_name(std::size_t p) { return "patch #" + std::to_string(p); }
 
 // A chart's placement: uv -> scale * rotation(uv) + (tx, ty).
@@ -139,6 +144,10 @@ struct Chart_set
   // patch), so that each chart is read from one contiguous run; patch p
   // owns the corners [3 first_face[p], 3 first_face[p + 1]).
   std::vector<Packing_point> corners;
+  // Corners are stored relative to their chart's first UV: a chart 1e-13
+  // wide placed at 0.45 would otherwise lose its shape to cancellation
+  // when it is moved to its place.
+  std::vector<Packing_point> origin;
   std::vector<std::size_t> first_face;       // P + 1 entries
   std::vector<double> uv_area, surface_area;
   std::vector<Packing_rotation> rotation;    // chosen frame of each chart
@@ -185,6 +194,7 @@ void collect_charts(const TriangleMesh& tm, const FacePatchMap& face_patch_map, 
   charts.uv_area.assign(number_of_patches, 0.);
   charts.surface_area.assign(number_of_patches, 0.);
   charts.corners.resize(3 * number_of_faces);
+  charts.origin.assign(number_of_patches, Packing_point());
   std::vector<std::size_t> cursor(charts.first_face.begin(), charts.first_face.end() - 1);
   const auto coordinates_of = make_coordinates_reader(tm, np);
   for(std::size_t i = 0; i < number_of_faces; ++i)
@@ -194,10 +204,12 @@ void collect_charts(const TriangleMesh& tm, const FacePatchMap& face_patch_map, 
     const halfedge_descriptor h1 = next(h0, tm), h2 = next(h1, tm);
     if(next(h2, tm) != h0)
       throw Input_error("pack_patches: face #" + std::to_string(i) + " is not a triangle");
+    if(cursor[p] == charts.first_face[p])
+      charts.origin[p] = to_packing_point(get(uv_map, h0));
     Packing_point* corner = &charts.corners[3 * cursor[p]++];
-    corner[0] = to_packing_point(get(uv_map, h0));
-    corner[1] = to_packing_point(get(uv_map, h1));
-    corner[2] = to_packing_point(get(uv_map, h2));
+    corner[0] = relative_to(to_packing_point(get(uv_map, h0)), charts.origin[p]);
+    corner[1] = relative_to(to_packing_point(get(uv_map, h1)), charts.origin[p]);
+    corner[2] = relative_to(to_packing_point(get(uv_map, h2)), charts.origin[p]);
     // A non-finite UV makes the patch's area non-finite, reported below.
     charts.uv_area[p] += 0.5 * packing_cross(corner[0], corner[1], corner[2]);
     if(with_surface_area)
@@ -482,10 +494,12 @@ Packing_report pack_patches(const TriangleMesh& tm,
   // Every halfedge of a face is written once, so nothing is moved twice.
   for(std::size_t i = 0; i < charts.faces.size(); ++i)
   {
-    const internal::Chart_similarity& sim = placement[charts.patch_of[i]];
+    const std::size_t p = charts.patch_of[i];
+    const internal::Chart_similarity& sim = placement[p];
     for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(charts.faces[i], tm), tm))
     {
-      const internal::Packing_point q = sim.rotation(internal::to_packing_point(get(uv_map, h)));
+      const internal::Packing_point q =
+        sim.rotation(internal::relative_to(internal::to_packing_point(get(uv_map, h)), charts.origin[p]));
       put(uv_map, h, UV_point(sim.scale * q.x + sim.tx, sim.scale * q.y + sim.ty));
     }
   }
