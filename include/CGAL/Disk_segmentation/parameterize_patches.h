@@ -113,9 +113,9 @@ constexpr double default_max_area_distortion = 1.0;
 /// they are parameterized. The time and memory of a chart's sparse
 /// factorization grow faster than its number of faces: on a 2.2M-face mesh
 /// this bound halves the parameterization time and keeps the peak memory of
-/// the whole pipeline under 0.9 GB, for 3 more charts than \f$ 2^{18} \f$
-/// (see the benchmark README). With the default 10 seeds, meshes below about
-/// 1M faces rarely have such patches.
+/// the whole pipeline at 0.89 GB on one thread (1.06 GB on two), for 3 more
+/// charts than \f$ 2^{18} \f$ (see the benchmark README). With the default
+/// 10 seeds, meshes below about 1M faces rarely have such patches.
 constexpr std::size_t default_max_chart_faces = std::size_t(1) << 17;
 
 namespace internal {
