@@ -38,6 +38,7 @@
 #include <cstdio>
 #include <iostream>
 #include <string>
+#include <sys/resource.h>
 #include <unistd.h>
 
 namespace DS = CGAL::Disk_segmentation;
@@ -74,6 +75,15 @@ void write_patch_ids(std::ostream& out, const Mesh& mesh, const Patch_map& patch
     out << patch[f] << '\n';
 }
 
+// The process's peak resident memory so far, in MB (Linux reports KB).
+double peak_rss_mb()
+{
+  struct rusage usage;
+  if(::getrusage(RUSAGE_SELF, &usage) != 0)
+    return 0;
+  return double(usage.ru_maxrss) / 1024.;
+}
+
 nlohmann::json report_json(const std::string& input, const Mesh& mesh, const DS::Atlas_report& r,
                            const std::string& method, const std::string& packer, double read_seconds,
                            const disk_uv::Read_changes& changes)
@@ -106,6 +116,7 @@ nlohmann::json report_json(const std::string& input, const Mesh& mesh, const DS:
     { "seconds", { { "read", read_seconds }, { "voronoi", r.voronoi_seconds }, { "refine", r.refine_seconds },
                    { "merge", r.merge_seconds }, { "parameterization", r.parameterization_seconds },
                    { "packing", r.packing_seconds }, { "total", r.total_seconds } } },
+    { "peak_rss_mb", peak_rss_mb() },
     { "charts", charts } };
 }
 

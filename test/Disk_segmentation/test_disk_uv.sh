@@ -37,6 +37,8 @@ ls "$work" | grep -q tmp && fail "a temporary file was left behind" || pass
 [ "$(head -c 4 "$work/atlas.png" | tail -c 3)" = "PNG" ] && pass || fail "PNG lacks its signature"
 grep -q '"charts"' "$work/report.json" && grep -q '"efficiency"' "$work/report.json" && pass || fail "JSON report lacks fields"
 grep -q '"invalid_charts": 0' "$work/report.json" && pass || fail "report says some chart is invalid"
+python3 -c "import json,sys; sys.exit(0 if json.load(open('$work/report.json'))['peak_rss_mb'] > 1 else 1)" \
+  && pass || fail "report lacks a plausible peak_rss_mb"
 
 # --- same input, same output
 "$tool" "$data/elephant.off" -n 12 --patch-ids "$work/ids2.txt" > /dev/null 2>&1
