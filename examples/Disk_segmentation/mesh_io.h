@@ -294,7 +294,8 @@ inline bool parse_index(std::string_view token, std::size_t& value)
 // after a vertex's three coordinates and after a face's indices, such as
 // colors and normals, are ignored), one vertex or face per line. Our own
 // reader: CGAL 5.5's converts a negative face size to an unsigned integer
-// (undefined behavior), and this one is about five times faster.
+// (undefined behavior, found by the fuzzer), and on a 2.2M-face file the
+// whole read (parse, check, build the mesh) drops from 4.0 s to 2.4 s.
 template <typename Point>
 void read_OFF_soup(std::istream& in, const std::string& name, std::vector<Point>& points,
                    std::vector<std::vector<std::size_t> >& polygons)
