@@ -94,6 +94,11 @@ expect_error 2 "" "$data/elephant.off" --no-such-option
 [ $? -eq 1 ] && grep -qiE "non-finite|not a valid" "$work/err.txt" && pass || fail "NaN input: $(cat "$work/err.txt")"
 
 expect_error 1 "max_chart_faces" "$data/elephant.off" --max-chart-faces 0
+# Inputs that broke CGAL's own readers (see fuzz/regressions/README.md).
+cp "$data/../fuzz/regressions/ply_property_before_element" "$work/prop.ply"
+expect_error 1 "property comes before any element" "$work/prop.ply"
+cp "$data/../fuzz/regressions/off_negative_face_size" "$work/negative.off"
+expect_error 1 "face #0 does not start with its number of vertices" "$work/negative.off"
 # A face listed twice, inside a two-face strip.
 printf 'OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 2 1 3\n3 0 1 2\n' > "$work/duplicated_face.off"
 expect_error 1 "face #2 duplicates face #0" "$work/duplicated_face.off"
