@@ -21,6 +21,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstdio>
 #include <fstream>
 #include <istream>
@@ -277,7 +278,13 @@ inline bool parse_number(std::string_view token, double& value)
   if(!token.empty() && token[0] == '+')
     ++first;
   const auto result = std::from_chars(first, token.data() + token.size(), value);
-  return result.ec == std::errc() && result.ptr == token.data() + token.size();
+  if(result.ptr != token.data() + token.size())
+    return false;
+  // 1e400 or 1e-400: strtod gives infinity (named later as a non-finite
+  // coordinate) or zero, as a user would expect.
+  if(result.ec == std::errc::result_out_of_range)
+    value = std::strtod(std::string(token).c_str(), nullptr);
+  return result.ec == std::errc() || result.ec == std::errc::result_out_of_range;
 }
 
 inline bool parse_index(std::string_view token, std::size_t& value)

@@ -62,6 +62,7 @@ printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n' > "$work/truncated.off"
 : > "$work/empty.off"
 printf 'OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n' > "$work/quad.off"
 printf 'OFF\n3 1 0\n0 0 0\nnan 0 0\n1 1 0\n3 0 1 2\n' > "$work/nan.off"
+printf 'OFF\n3 1 0\n0 0 0\n1e400 0 0\n1 1 0\n3 0 1 2\n' > "$work/overflow.off"
 printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n1 1 0\n3 0 1 7\n' > "$work/badindex.off"
 # Three triangles on one edge.
 printf 'OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n' > "$work/nonmanifold_edge.off"
@@ -94,6 +95,7 @@ expect_error 2 "" "$data/elephant.off" --no-such-option
 [ $? -eq 1 ] && grep -qiE "non-finite|not a valid" "$work/err.txt" && pass || fail "NaN input: $(cat "$work/err.txt")"
 
 expect_error 1 "max_chart_faces" "$data/elephant.off" --max-chart-faces 0
+expect_error 1 "vertex #1 has a non-finite" "$work/overflow.off"
 # Inputs that broke CGAL's own readers (see fuzz/regressions/README.md).
 cp "$data/../fuzz/regressions/ply_property_before_element" "$work/prop.ply"
 expect_error 1 "property comes before any element" "$work/prop.ply"
