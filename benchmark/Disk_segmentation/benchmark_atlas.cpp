@@ -109,14 +109,7 @@ struct Level
   std::size_t charts = 0;
 };
 
-Level& level(int L)
-{
-  static std::map<int, std::unique_ptr<Level> > cache;
-  std::unique_ptr<Level>& slot = cache[L];
-  if(!slot)
-    slot.reset(new Level(mesh_level(L)));
-  return *slot;
-}
+Level& level(int L) { return cached_level<Level>(L); }
 
 const Level& level_with_segmentation(int L)
 {

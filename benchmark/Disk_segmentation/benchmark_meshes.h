@@ -93,6 +93,18 @@ inline const Mesh_level& mesh_level(int L)
   return *slot;
 }
 
+// A program's per-level data (its `Level` type caches its own results),
+// built from mesh_level(L) on first use and kept for the whole run.
+template <typename Level>
+Level& cached_level(int L)
+{
+  static std::map<int, std::unique_ptr<Level> > cache;
+  std::unique_ptr<Level>& slot = cache[L];
+  if(!slot)
+    slot.reset(new Level(mesh_level(L)));
+  return *slot;
+}
+
 // The fastest repetition, reported next to the mean/median/stddev/cv
 // aggregates when --benchmark_repetitions is above 1.
 inline double minimum(const std::vector<double>& v)
