@@ -525,6 +525,9 @@ void write_glb(std::ostream& out, const Mesh& mesh, const Patch_map& patch, cons
     throw std::runtime_error("error while writing the glTF file");
 }
 
+// Larger pictures would need over 800 MB of pixels.
+constexpr unsigned max_atlas_png_resolution = 16384;
+
 // The atlas layout as an RGB PNG of resolution x resolution pixels, v axis up
 // (row 0 is v = 1): white background, the faces of each chart filled with
 // chart_color(chart), chart borders (edges between two charts, and boundary
@@ -541,8 +544,9 @@ void write_atlas_png(std::ostream& out, const Mesh& mesh, const Patch_map& patch
   typedef typename GT::face_descriptor face_descriptor;
   typedef std::array<double, 2> P2;
 
-  if(resolution == 0 || resolution > 16384)
-    throw std::runtime_error("the atlas resolution must be between 1 and 16384 pixels, not " +
+  if(resolution == 0 || resolution > max_atlas_png_resolution)
+    throw std::runtime_error("the atlas resolution must be between 1 and " +
+                             std::to_string(max_atlas_png_resolution) + " pixels, not " +
                              std::to_string(resolution));
   const int size = static_cast<int>(resolution);
   atlas_internal::Rgb_image image(size);

@@ -24,6 +24,7 @@
 
 #include "atlas_writers.h"
 #include "mesh_io.h"
+#include "output_files.h"
 
 #include <CGAL/Disk_segmentation.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -34,6 +35,7 @@
 #include <nlohmann/json.hpp>
 
 #include <array>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -120,6 +122,24 @@ nlohmann::json report_json(const std::string& input, const Mesh& mesh, const DS:
     { "charts", charts } };
 }
 
+// CLI11 reads "-1" into an unsigned option as a huge number and saturates
+// overflowing ones: counts are checked as text first.
+const CLI::Validator non_negative_count(
+  [](std::string& text) -> std::string {
+    std::uint64_t value = 0;
+    const auto result = std::from_chars(text.data(), text.data() + text.size(), value);
+    if(text.empty() || text.find_first_not_of("0123456789") != std::string::npos)
+      return "'" + text + "' is not a non-negative integer";
+    if(result.ec != std::errc() || value > std::numeric_limits<unsigned int>::max())
+      return "'" + text + "' is too large";
+    return std::string();
+  },
+  "COUNT");
+
+const CLI::Validator non_empty_path(
+  [](std::string& text) -> std::string { return text.empty() ? "the file name is empty" : std::string(); },
+  "FILE");
+
 // Progress on stderr, once the run has lasted a second, and only on a
 // terminal-like stream: a line rewritten in place.
 class Progress_display
@@ -167,30 +187,33 @@ int main(int argc, char** argv)
   bool no_fallback = false, quiet = false;
   disk_uv::Read_options read_options;
   app.add_option("INPUT", input, "input triangle mesh (.off .obj .ply .stl .ts)")->required();
-  app.add_option("-o,--obj", obj_path, "write the atlas as OBJ (per-corner vt, one group per chart)");
-  app.add_option("--glb", glb_path, "write the atlas as binary glTF 2.0 (TEXCOORD_0)");
-  app.add_option("--atlas-png", png_path, "draw the atlas layout (flipped triangles in red)");
-  app.add_option("--report", report_path, "write all statistics as JSON");
-  app.add_option("--patch-ids", patch_ids_path, "write one chart id per face, in input face order");
-  app.add_option("--colored", colored_path, "write a PLY mesh with one color per chart");
+  app.add_option("-o,--obj", obj_path, "write the atlas as OBJ (per-corner vt, one group per chart)")->check(non_empty_path);
+  app.add_option("--glb", glb_path, "write the atlas as binary glTF 2.0 (TEXCOORD_0)")->check(non_empty_path);
+  app.add_option("--atlas-png", png_path, "draw the atlas layout (flipped triangles in red)")->check(non_empty_path);
+  app.add_option("--report", report_path, "write all statistics as JSON")->check(non_empty_path);
+  app.add_option("--patch-ids", patch_ids_path, "write one chart id per face, in input face order")->check(non_empty_path);
+  app.add_option("--colored", colored_path, "write a PLY mesh with one color per chart")->check(non_empty_path);
   app.add_option("--method", method_name, "parameterization: arap, conformal, lscm, mvc or tutte")
     ->capture_default_str();
   app.add_option("--packer", packer_name, "packing: tight (one texel density) or grid (the paper's)")
     ->capture_default_str();
-  app.add_option("--resolution", resolution, "target texture side in texels")->capture_default_str();
+  app.add_option("--resolution", resolution, "target texture side in texels")->capture_default_str()->check(non_negative_count);
   app.add_option("--padding", padding, "gap around charts in texels")->capture_default_str();
-  app.add_option("-n,--seeds", n, "number of farthest-point seeds")->capture_default_str();
-  app.add_option("-k,--subsamples", k, "seeds used to re-sample a region that is not a disk")->capture_default_str();
+  app.add_option("-n,--seeds", n, "number of farthest-point seeds")->capture_default_str()->check(non_negative_count);
+  app.add_option("-k,--subsamples", k, "seeds used to re-sample a region that is not a disk")->capture_default_str()->check(non_negative_count);
   app.add_option("--threshold", threshold, "merge score threshold (eps_5 = 0.7624 by default)")->capture_default_str();
   app.add_option("--max-distortion", max_distortion,
                  "split charts whose mean |log(area ratio)| exceeds this (inf: never)")->capture_default_str();
   app.add_option("--max-chart-faces", max_chart_faces,
-                 "split larger patches before parameterizing them (bounds memory)")->capture_default_str();
-  app.add_option("--threads", threads, "maximum number of threads (0: all)")->capture_default_str();
+                 "split larger patches before parameterizing them (bounds memory)")->capture_default_str()->check(non_negative_count);
+  app.add_option("--threads", threads, "maximum number of threads (0: all)")->capture_default_str()->check(non_negative_count);
   app.add_flag("--repair", read_options.repair,
                "merge duplicated vertices, drop duplicated and degenerate faces, orient the faces and "
                "cut the mesh at non-manifold edges and vertices");
   app.add_flag("--triangulate", read_options.triangulate, "triangulate faces with more than 3 vertices");
+  app.add_flag("--allow-special-input", read_options.allow_special_input,
+               "read INPUT even if it is not a regular file (a pipe, a device: read to its end, at most 4 GiB); "
+               "without it such an input is refused");
   app.add_flag("--no-fallback", no_fallback, "keep invalid charts (and report them) instead of redoing them");
   app.add_flag("-q,--quiet", quiet, "no progress display and no summary");
   try
@@ -205,9 +228,36 @@ int main(int argc, char** argv)
   Progress_display display(!quiet && ::isatty(2));
   try
   {
-    for(const std::string& out : { obj_path, glb_path, png_path, report_path, patch_ids_path, colored_path })
-      if(!out.empty() && out == input)
-        throw disk_uv::Tool_error("refusing to overwrite the input file '" + input + "'");
+    if(!png_path.empty() && (resolution == 0 || resolution > disk_uv::max_atlas_png_resolution))
+      throw disk_uv::Tool_error("--atlas-png needs --resolution between 1 and " +
+                                std::to_string(disk_uv::max_atlas_png_resolution) + ", not " +
+                                std::to_string(resolution));
+    // Every output is checked before any work, written at the end.
+    disk_uv::Output_files outputs;
+    std::vector<disk_uv::Output_files::Writer> writers;
+    const DS::Atlas_report* report_ptr = nullptr;
+    const disk_uv::Read_changes* changes_ptr = nullptr;
+    double read_seconds = 0;
+    Mesh mesh;
+    Patch_map patch;
+    UV_map uv;
+    auto add_output = [&](const char* option, const std::string& path, disk_uv::Output_files::Writer writer) {
+      if(path.empty())
+        return;
+      outputs.add(option, path, input);
+      writers.push_back(std::move(writer));
+    };
+    add_output("-o", obj_path, [&](std::ostream& o) { disk_uv::write_obj(o, mesh, patch, uv); });
+    add_output("--glb", glb_path, [&](std::ostream& o) { disk_uv::write_glb(o, mesh, patch, uv); });
+    add_output("--atlas-png", png_path,
+               [&](std::ostream& o) { disk_uv::write_atlas_png(o, mesh, patch, uv, resolution); });
+    add_output("--patch-ids", patch_ids_path, [&](std::ostream& o) { write_patch_ids(o, mesh, patch); });
+    add_output("--colored", colored_path, [&](std::ostream& o) { write_colored_ply(o, mesh, patch); });
+    add_output("--report", report_path, [&](std::ostream& o) {
+      o << report_json(input, mesh, *report_ptr, method_name, packer_name, read_seconds, *changes_ptr).dump(2)
+        << '\n';
+    });
+
     const DS::Parameterization_method method = DS::parameterization_method_from_string(method_name);
     DS::Packing_method packer;
     if(packer_name == "tight") packer = DS::Packing_method::TIGHT;
@@ -216,11 +266,10 @@ int main(int argc, char** argv)
 
     CGAL::Real_timer timer;
     timer.start();
-    Mesh mesh;
     const disk_uv::Read_changes changes = disk_uv::read_triangle_mesh(input, mesh, read_options);
-    const double read_seconds = timer.time();
-    Patch_map patch = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:patch", 0).first;
-    UV_map uv = mesh.add_property_map<Mesh::Halfedge_index, Kernel::Point_2>("h:uv", Kernel::Point_2(0, 0)).first;
+    read_seconds = timer.time();
+    patch = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:patch", 0).first;
+    uv = mesh.add_property_map<Mesh::Halfedge_index, Kernel::Point_2>("h:uv", Kernel::Point_2(0, 0)).first;
 
     const DS::Atlas_report report = DS::uv_atlas(
       mesh, uv,
@@ -233,22 +282,9 @@ int main(int argc, char** argv)
           [&display](const std::string& s, std::size_t d, std::size_t t) { display(s, d, t); })));
     display.finish();
 
-    if(!obj_path.empty())
-      disk_uv::write_file_atomically(obj_path, [&](std::ostream& o) { disk_uv::write_obj(o, mesh, patch, uv); });
-    if(!glb_path.empty())
-      disk_uv::write_file_atomically(glb_path, [&](std::ostream& o) { disk_uv::write_glb(o, mesh, patch, uv); });
-    if(!png_path.empty())
-      disk_uv::write_file_atomically(png_path, [&](std::ostream& o) {
-        disk_uv::write_atlas_png(o, mesh, patch, uv, resolution);
-      });
-    if(!patch_ids_path.empty())
-      disk_uv::write_file_atomically(patch_ids_path, [&](std::ostream& o) { write_patch_ids(o, mesh, patch); });
-    if(!colored_path.empty())
-      disk_uv::write_file_atomically(colored_path, [&](std::ostream& o) { write_colored_ply(o, mesh, patch); });
-    if(!report_path.empty())
-      disk_uv::write_file_atomically(report_path, [&](std::ostream& o) {
-        o << report_json(input, mesh, report, method_name, packer_name, read_seconds, changes).dump(2) << '\n';
-      });
+    report_ptr = &report;
+    changes_ptr = &changes;
+    outputs.write_all(writers);
 
     if(!quiet && (changes.polygons_triangulated || changes.faces_removed || changes.vertices_added ||
                   changes.vertices_removed))

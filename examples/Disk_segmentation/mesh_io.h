@@ -1,18 +1,21 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// File input and output of the disk_uv tool: reading any mesh format CGAL
-// reads with a one-line diagnosis of what is wrong with a bad file, and
-// writing outputs so that a failure never leaves a half-written file.
+// File input of the disk_uv tool: reading a mesh file with a one-line
+// diagnosis of what is wrong with a bad one, optional repair and
+// triangulation, and the checks a triangle mesh must pass. Outputs are
+// written by output_files.h.
 
 #ifndef DISK_SEGMENTATION_EXAMPLES_MESH_IO_H
 #define DISK_SEGMENTATION_EXAMPLES_MESH_IO_H
+
+#include "polygon_triangulation.h"
+#include "tool_error.h"
 
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
@@ -37,11 +40,6 @@
 #include <unistd.h>
 
 namespace disk_uv {
-
-struct Tool_error : std::runtime_error
-{
-  using std::runtime_error::runtime_error;
-};
 
 inline std::string lower_extension(const std::string& path)
 {
@@ -196,9 +194,12 @@ struct Read_options
   // consistently and duplicates the points of non-manifold edges and
   // vertices (the mesh is cut there).
   bool repair = false;
-  // Polygons of 4 or more vertices are triangulated (constrained Delaunay
-  // in the polygon's plane; a fan if that fails).
+  // Polygons of 4 or more vertices are triangulated (ear clipping in the
+  // polygon's plane; a fan if that fails, see polygon_triangulation.h).
   bool triangulate = false;
+  // Inputs that are not regular files (pipes, devices) are refused unless
+  // this is set: they may never end.
+  bool allow_special_input = false;
 };
 
 // What reading changed; all zero when the file was used as it is.
@@ -211,46 +212,6 @@ struct Read_changes
   std::size_t vertices_removed = 0;    // merged or isolated, net of the ones the repair duplicated
   std::size_t vertices_added = 0;      // duplicated by the repair to make the mesh manifold
 };
-
-// The triangles of one polygon, as indices into `points`.
-template <typename Point>
-std::vector<std::vector<std::size_t> > triangulate_polygon(const std::vector<Point>& points,
-                                                           const std::vector<std::size_t>& polygon,
-                                                           bool& used_fan)
-{
-  typedef CGAL::Surface_mesh<Point> Polygon_mesh;
-  std::vector<std::vector<std::size_t> > triangles;
-  used_fan = false;
-  Polygon_mesh pm;
-  std::vector<typename Polygon_mesh::Vertex_index> corners;
-  for(std::size_t v : polygon)
-    corners.push_back(pm.add_vertex(points[v]));
-  bool ok = false;
-  try
-  {
-    ok = pm.add_face(corners) != Polygon_mesh::null_face() &&
-         CGAL::Polygon_mesh_processing::triangulate_faces(pm);
-  }
-  catch(const std::exception&)
-  {
-    ok = false;
-  }
-  if(ok)
-    for(typename Polygon_mesh::Face_index f : pm.faces())
-    {
-      std::vector<std::size_t> t;
-      for(typename Polygon_mesh::Vertex_index v : CGAL::vertices_around_face(pm.halfedge(f), pm))
-        t.push_back(polygon[std::size_t(v)]);
-      triangles.push_back(t);
-    }
-  else
-  {
-    used_fan = true;
-    for(std::size_t i = 1; i + 1 < polygon.size(); ++i)
-      triangles.push_back({ polygon[0], polygon[i], polygon[i + 1] });
-  }
-  return triangles;
-}
 
 namespace internal {
 
@@ -521,40 +482,6 @@ Read_changes read_triangle_mesh(const std::string& path, Mesh& mesh, const Read_
   mesh.clear();
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, mesh);
   return changes;
-}
-
-// Writes `path` through a temporary file in the same folder renamed at the
-// end: on any failure the previous content of `path` is left untouched.
-inline void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write)
-{
-  const std::string temporary = path + ".tmp" + std::to_string(::getpid());
-  {
-    std::ofstream out(temporary, std::ios::binary);
-    if(!out)
-      throw Tool_error("cannot write '" + path + "'");
-    try
-    {
-      write(out);
-      out.flush();
-    }
-    catch(...)
-    {
-      out.close();
-      std::remove(temporary.c_str());
-      throw;
-    }
-    if(!out)
-    {
-      out.close();
-      std::remove(temporary.c_str());
-      throw Tool_error("error while writing '" + path + "' (disk full?)");
-    }
-  }
-  if(std::rename(temporary.c_str(), path.c_str()) != 0)
-  {
-    std::remove(temporary.c_str());
-    throw Tool_error("cannot replace '" + path + "'");
-  }
 }
 
 } // namespace disk_uv

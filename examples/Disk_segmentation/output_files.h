@@ -1,0 +1,421 @@
+// Copyright (c) 2026 The Disk_segmentation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The disk_uv tool's outputs as one transaction: every output path is
+// checked before any work is done, every output is written to a temporary
+// file beside its target, and the targets are replaced only once all of
+// them were written. A failed run leaves every file the user had as it was.
+//
+// What the file system allows: the renames at the end are each atomic, but
+// not all together (a crash between two renames replaces some outputs
+// only), and the temporary files are not synced to disk before they are
+// renamed. Outputs that are not regular files (/dev/null, a pipe, a
+// terminal) are written through, after all temporary files were written and
+// before any rename; what was written to them cannot be taken back.
+
+#ifndef DISK_SEGMENTATION_EXAMPLES_OUTPUT_FILES_H
+#define DISK_SEGMENTATION_EXAMPLES_OUTPUT_FILES_H
+
+#include "tool_error.h"
+
+#include <cerrno>
+#include <csignal>
+#include <cstring>
+#include <functional>
+#include <stdexcept>
+#include <ostream>
+#include <streambuf>
+#include <string>
+#include <vector>
+
+#include <fcntl.h>
+#include <limits.h>
+#include <stdlib.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace disk_uv {
+
+namespace internal {
+
+// An output stream buffer over a file descriptor that remembers the first
+// write error, so that "disk full" is reported rather than lost.
+class Descriptor_buffer : public std::streambuf
+{
+public:
+  explicit Descriptor_buffer(int fd) : fd_(fd), buffer_(1 << 16) { setp(buffer_.data(), buffer_.data() + buffer_.size()); }
+  int error() const { return error_; }
+
+protected:
+  int_type overflow(int_type c) override
+  {
+    if(!flush_buffer())
+      return traits_type::eof();
+    if(!traits_type::eq_int_type(c, traits_type::eof()))
+    {
+      *pptr() = traits_type::to_char_type(c);
+      pbump(1);
+    }
+    return traits_type::not_eof(c);
+  }
+  int sync() override { return flush_buffer() ? 0 : -1; }
+
+private:
+  bool flush_buffer()
+  {
+    const char* data = pbase();
+    std::size_t left = std::size_t(pptr() - pbase());
+    while(left > 0 && error_ == 0)
+    {
+      const ssize_t written = ::write(fd_, data, left);
+      if(written < 0 && errno == EINTR)
+        continue;
+      if(written <= 0)
+        error_ = written < 0 ? errno : EIO;
+      else
+      {
+        data += written;
+        left -= std::size_t(written);
+      }
+    }
+    setp(buffer_.data(), buffer_.data() + buffer_.size());
+    return error_ == 0;
+  }
+
+  int fd_;
+  int error_ = 0;
+  std::vector<char> buffer_;
+};
+
+// Temporary files to remove if the tool is interrupted while writing them.
+// Fixed storage: the signal handler may only call async-signal-safe code.
+struct Interrupted_cleanup
+{
+  static constexpr int capacity = 16;
+  static char* paths()
+  {
+    static char storage[capacity][PATH_MAX + 1];
+    return &storage[0][0];
+  }
+  static volatile std::sig_atomic_t* used()
+  {
+    static volatile std::sig_atomic_t flags[capacity];
+    return flags;
+  }
+  static int add(const std::string& path)
+  {
+    for(int i = 0; i < capacity; ++i)
+      if(!used()[i] && path.size() <= PATH_MAX)
+      {
+        std::memcpy(paths() + i * (PATH_MAX + 1), path.c_str(), path.size() + 1);
+        used()[i] = 1;
+        return i;
+      }
+    return -1;
+  }
+  static void remove(int slot)
+  {
+    if(slot >= 0)
+      used()[slot] = 0;
+  }
+  static void handle(int signal_number)
+  {
+    for(int i = 0; i < capacity; ++i)
+      if(used()[i])
+        ::unlink(paths() + i * (PATH_MAX + 1));
+    std::signal(signal_number, SIG_DFL);
+    std::raise(signal_number);
+  }
+  static void install()
+  {
+    for(int s : { SIGINT, SIGTERM, SIGHUP })
+      std::signal(s, &Interrupted_cleanup::handle);
+  }
+};
+
+inline std::string system_error_text(int error) { return std::strerror(error); }
+
+inline std::string directory_of(const std::string& path)
+{
+  const std::size_t slash = path.find_last_of('/');
+  if(slash == std::string::npos)
+    return ".";
+  return slash == 0 ? "/" : path.substr(0, slash);
+}
+
+inline std::string file_name_of(const std::string& path)
+{
+  const std::size_t slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+inline std::string canonical_path(const std::string& path)
+{
+  char resolved[PATH_MAX];
+  if(::realpath(path.c_str(), resolved) == nullptr)
+    return std::string();
+  return resolved;
+}
+
+} // namespace internal
+
+// The outputs of one run; see the top of this file.
+class Output_files
+{
+public:
+  typedef std::function<void(std::ostream&)> Writer;
+
+  Output_files() = default;
+  Output_files(const Output_files&) = delete;
+  Output_files& operator=(const Output_files&) = delete;
+  ~Output_files() { discard(); }
+
+  // Checks `path`, given with `option`, before any work: it must be a
+  // writable regular file or a new file in a writable folder (followed
+  // through symbolic links), or something written through such as
+  // /dev/null or a pipe with a reader. It must not be the input file, nor
+  // the same file as another output. Throws Tool_error naming the problem.
+  void add(const std::string& option, const std::string& path, const std::string& input)
+  {
+    Output o;
+    o.option = option;
+    o.path = path;
+    if(path.empty())
+      fail(o, "the file name is empty");
+    struct stat link_status, status;
+    if(::lstat(path.c_str(), &link_status) != 0)
+    {
+      if(errno != ENOENT)
+        fail(o, internal::system_error_text(errno));
+      prepare_new_file(o);
+    }
+    else if(::stat(path.c_str(), &status) != 0)
+      fail(o, "it is a symbolic link to a missing file");
+    else if(S_ISDIR(status.st_mode))
+      fail(o, "it is a folder");
+    else if(S_ISREG(status.st_mode))
+      prepare_replacement(o, status);
+    else if(S_ISCHR(status.st_mode) || S_ISFIFO(status.st_mode))
+      prepare_write_through(o, status);
+    else
+      fail(o, "it is neither a regular file, a character device nor a pipe");
+
+    struct stat input_status;
+    if(o.exists && ::stat(input.c_str(), &input_status) == 0 && input_status.st_dev == o.device &&
+       input_status.st_ino == o.inode)
+      fail(o, "it is the input file");
+    for(const Output& other : outputs_)
+      if(o.same_file(other) && !(o.write_through && S_ISCHR(status.st_mode)))
+        throw Tool_error("'" + path + "' is given to both " + other.option + " and " + option +
+                         "; one file cannot hold both outputs");
+    outputs_.push_back(std::move(o));
+  }
+
+  // Writes every output added, in the order added, through `writers` (one
+  // per output), then replaces the targets. On any failure, no target has
+  // been replaced and no temporary file is left.
+  void write_all(const std::vector<Writer>& writers)
+  {
+    if(writers.size() != outputs_.size())
+      throw std::logic_error("Output_files::write_all: one writer per output is needed");
+    internal::Interrupted_cleanup::install();
+    for(std::size_t i = 0; i < outputs_.size(); ++i)
+      if(!outputs_[i].write_through)
+        write_temporary(outputs_[i], writers[i]);
+    for(std::size_t i = 0; i < outputs_.size(); ++i)
+      if(outputs_[i].write_through)
+        write_through(outputs_[i], writers[i]);
+    for(std::size_t i = 0; i < outputs_.size(); ++i)
+    {
+      Output& o = outputs_[i];
+      if(o.write_through)
+        continue;
+      if(::rename(o.temporary.c_str(), o.target.c_str()) != 0)
+      {
+        const int error = errno;
+        std::string replaced;
+        for(std::size_t j = 0; j < i; ++j)
+          if(!outputs_[j].write_through)
+            replaced += (replaced.empty() ? "" : ", ") + outputs_[j].path;
+        throw Tool_error("cannot replace '" + o.path + "' (" + internal::system_error_text(error) + ")" +
+                         (replaced.empty() ? std::string() : "; already replaced: " + replaced));
+      }
+      o.temporary.clear();
+      internal::Interrupted_cleanup::remove(o.cleanup_slot);
+      o.cleanup_slot = -1;
+    }
+  }
+
+  std::size_t size() const { return outputs_.size(); }
+
+private:
+  struct Output
+  {
+    std::string option, path;
+    std::string target;       // the file replaced (symbolic links followed)
+    std::string identity;     // canonical path of a file that does not exist yet
+    std::string temporary;
+    bool exists = false;
+    bool write_through = false;
+    dev_t device = 0;
+    ino_t inode = 0;
+    mode_t mode = 0;
+    uid_t owner = 0;
+    gid_t group = 0;
+    int descriptor = -1;      // open write-through target
+    int cleanup_slot = -1;
+
+    bool same_file(const Output& o) const
+    {
+      if(exists != o.exists)
+        return false;
+      return exists ? device == o.device && inode == o.inode : identity == o.identity;
+    }
+  };
+
+  [[noreturn]] static void fail(const Output& o, const std::string& why)
+  {
+    throw Tool_error("cannot write " + o.option + " '" + o.path + "': " + why);
+  }
+
+  static void check_folder(const Output& o, const std::string& folder)
+  {
+    struct stat status;
+    if(::stat(folder.c_str(), &status) != 0)
+      fail(o, "its folder '" + folder + "' does not exist");
+    if(!S_ISDIR(status.st_mode))
+      fail(o, "'" + folder + "' is not a folder");
+    if(::access(folder.c_str(), W_OK | X_OK) != 0)
+      fail(o, "its folder '" + folder + "' is not writable");
+  }
+
+  static void prepare_new_file(Output& o)
+  {
+    const std::string folder = internal::directory_of(o.path);
+    check_folder(o, folder);
+    o.target = o.path;
+    o.identity = internal::canonical_path(folder) + "/" + internal::file_name_of(o.path);
+  }
+
+  static void prepare_replacement(Output& o, const struct stat& status)
+  {
+    // Replace the file a symbolic link points to, keeping the link.
+    o.target = internal::canonical_path(o.path);
+    if(o.target.empty())
+      fail(o, internal::system_error_text(errno));
+    check_folder(o, internal::directory_of(o.target));
+    if(::access(o.target.c_str(), W_OK) != 0)
+      fail(o, "it is not writable");
+    o.exists = true;
+    o.device = status.st_dev;
+    o.inode = status.st_ino;
+    o.mode = status.st_mode & 07777;
+    o.owner = status.st_uid;
+    o.group = status.st_gid;
+  }
+
+  static void prepare_write_through(Output& o, const struct stat& status)
+  {
+    o.exists = true;
+    o.write_through = true;
+    o.device = status.st_dev;
+    o.inode = status.st_ino;
+    // Non-blocking open: a pipe without reader fails at once instead of
+    // blocking the tool.
+    o.descriptor = ::open(o.path.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC | O_NONBLOCK);
+    if(o.descriptor < 0)
+      fail(o, errno == ENXIO ? std::string("it is a pipe that nobody reads") : internal::system_error_text(errno));
+    const int flags = ::fcntl(o.descriptor, F_GETFL);
+    if(flags < 0 || ::fcntl(o.descriptor, F_SETFL, flags & ~O_NONBLOCK) != 0)
+      fail(o, internal::system_error_text(errno));
+  }
+
+  // Writes `writer`'s output to `fd` and closes it; returns the first error.
+  static int write_and_close(int fd, const Writer& writer)
+  {
+    int error = 0;
+    {
+      internal::Descriptor_buffer buffer(fd);
+      std::ostream out(&buffer);
+      try
+      {
+        writer(out);
+        out.flush();
+      }
+      catch(...)
+      {
+        ::close(fd);
+        throw;
+      }
+      error = buffer.error();
+      if(error == 0 && !out)
+        error = EIO;
+    }
+    if(::close(fd) != 0 && error == 0)
+      error = errno;
+    return error;
+  }
+
+  void write_temporary(Output& o, const Writer& writer)
+  {
+    const std::string folder = internal::directory_of(o.target);
+    const std::string stem = folder + "/." + internal::file_name_of(o.target) + ".disk_uv-" + std::to_string(::getpid());
+    int fd = -1;
+    for(int attempt = 0; attempt < 100 && fd < 0; ++attempt)
+    {
+      o.temporary = stem + "-" + std::to_string(attempt);
+      // O_EXCL: never write into a file that is already there. Mode 0666
+      // lets the umask decide, as for any new file.
+      fd = ::open(o.temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+      if(fd < 0 && errno != EEXIST)
+        break;
+    }
+    if(fd < 0)
+    {
+      const int error = errno;
+      o.temporary.clear();
+      fail(o, "cannot create a temporary file in '" + folder + "' (" + internal::system_error_text(error) + ")");
+    }
+    o.cleanup_slot = internal::Interrupted_cleanup::add(o.temporary);
+    if(o.exists)
+    {
+      // The replacement keeps the replaced file's permissions and, where
+      // allowed, its owner.
+      if(::fchown(fd, o.owner, o.group) != 0) {}
+      ::fchmod(fd, o.mode);
+    }
+    const int error = write_and_close(fd, writer);
+    if(error != 0)
+      throw Tool_error("error while writing '" + o.path + "': " + internal::system_error_text(error));
+  }
+
+  void write_through(Output& o, const Writer& writer)
+  {
+    const int fd = o.descriptor;
+    o.descriptor = -1;
+    const int error = write_and_close(fd, writer);
+    if(error != 0)
+      throw Tool_error("error while writing '" + o.path + "': " + internal::system_error_text(error));
+  }
+
+  void discard()
+  {
+    for(Output& o : outputs_)
+    {
+      if(!o.temporary.empty())
+        ::unlink(o.temporary.c_str());
+      internal::Interrupted_cleanup::remove(o.cleanup_slot);
+      if(o.descriptor >= 0)
+        ::close(o.descriptor);
+      o.temporary.clear();
+      o.descriptor = -1;
+      o.cleanup_slot = -1;
+    }
+  }
+
+  std::vector<Output> outputs_;
+};
+
+} // namespace disk_uv
+
+#endif // DISK_SEGMENTATION_EXAMPLES_OUTPUT_FILES_H
