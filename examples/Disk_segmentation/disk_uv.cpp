@@ -9,18 +9,20 @@
 //           [--method arap|conformal|lscm|mvc|tutte] [--packer tight|grid]
 //           [--resolution 1024] [--padding 2] [-n 10] [-k 5]
 //           [--threshold 0.7624] [--max-distortion 1] [--max-chart-faces 131072]
-//           [--threads 0] [--repair] [--triangulate]
+//           [--threads 0] [--repair] [--triangulate] [--allow-special-input]
 //           [--no-fallback] [--quiet]
 //
-// Inputs are used as they are: a non-manifold, inconsistently oriented or
-// duplicated-face mesh is rejected with a message naming the first bad
-// element, unless --repair (CGAL's polygon soup repair and orientation)
-// and --triangulate (polygons to triangles) are given; outputs then follow
-// the repaired mesh's face order.
+// Inputs are used as they are, except that a pinched vertex (faces meeting
+// in several fans) is split into one vertex per fan: a non-manifold edge,
+// inconsistently oriented or duplicated faces are rejected with a message
+// naming the first bad element, unless --repair (CGAL's polygon soup repair
+// and orientation) and --triangulate (polygons to triangles) are given;
+// outputs then follow the repaired mesh's face order.
 //
 // Prints a one-line summary; on any error prints one line on stderr and
-// exits with status 1 (2 for bad command-line usage). Outputs are written
-// to a temporary file renamed at the end, never half-written.
+// exits with status 1 (2 for bad command-line usage). Output paths are all
+// checked before any work, and the outputs replace their files only once
+// all were written (output_files.h): a failed run changes no file.
 
 #include "atlas_writers.h"
 #include "mesh_io.h"
@@ -107,7 +109,8 @@ nlohmann::json report_json(const std::string& input, const Mesh& mesh, const DS:
                          { "faces_added", changes.faces_added },
                          { "faces_removed", changes.faces_removed },
                          { "vertices_added", changes.vertices_added },
-                         { "vertices_removed", changes.vertices_removed } } },
+                         { "vertices_removed", changes.vertices_removed },
+                         { "pinched_vertices_split", changes.pinched_vertices_split } } },
     { "segmentation", { { "voronoi_cells", r.number_of_voronoi_cells },
                         { "refined_regions", r.number_of_refined_regions },
                         { "charts", r.number_of_charts } } },
@@ -264,6 +267,13 @@ int main(int argc, char** argv)
     else if(packer_name == "grid") packer = DS::Packing_method::GRID;
     else throw disk_uv::Tool_error("unknown packer '" + packer_name + "' (expected tight or grid)");
 
+    const auto settings =
+      DS::parameters::number_of_seeds(n).number_of_subsamples(k).merge_threshold(threshold)
+        .parameterization_method(method).use_fallback(!no_fallback).max_area_distortion(max_distortion)
+        .max_chart_faces(max_chart_faces).packing_method(packer)
+        .texture_resolution(resolution).padding_in_texels(padding).number_of_threads(threads);
+    DS::check_uv_atlas_parameters(settings);
+
     CGAL::Real_timer timer;
     timer.start();
     const disk_uv::Read_changes changes = disk_uv::read_triangle_mesh(input, mesh, read_options);
@@ -273,11 +283,7 @@ int main(int argc, char** argv)
 
     const DS::Atlas_report report = DS::uv_atlas(
       mesh, uv,
-      DS::parameters::number_of_seeds(n).number_of_subsamples(k).merge_threshold(threshold)
-        .parameterization_method(method).use_fallback(!no_fallback).max_area_distortion(max_distortion)
-        .max_chart_faces(max_chart_faces).packing_method(packer)
-        .texture_resolution(resolution).padding_in_texels(padding).number_of_threads(threads)
-        .face_patch_map(patch)
+      settings.face_patch_map(patch)
         .progress_callback(std::function<void(const std::string&, std::size_t, std::size_t)>(
           [&display](const std::string& s, std::size_t d, std::size_t t) { display(s, d, t); })));
     display.finish();
@@ -287,11 +293,11 @@ int main(int argc, char** argv)
     outputs.write_all(writers);
 
     if(!quiet && (changes.polygons_triangulated || changes.faces_removed || changes.vertices_added ||
-                  changes.vertices_removed))
+                  changes.vertices_removed || changes.pinched_vertices_split))
       std::printf("%s: input changed: %zu polygons triangulated (%zu as fans), %zu faces removed, "
-                  "%zu vertices removed, %zu vertices added\n",
+                  "%zu vertices removed, %zu vertices added, %zu pinched vertices split\n",
                   input.c_str(), changes.polygons_triangulated, changes.fan_triangulations, changes.faces_removed,
-                  changes.vertices_removed, changes.vertices_added);
+                  changes.vertices_removed, changes.vertices_added, changes.pinched_vertices_split);
     if(!quiet)
       std::printf("%s: %zu faces -> %zu charts (voronoi %zu, refined %zu), %s, %zu fallbacks, %zu invalid, "
                   "packing %.1f%%; time read %.3f s, segment %.3f s, parameterize %.3f s, pack %.3f s\n",

@@ -9,10 +9,11 @@
 #ifndef DISK_SEGMENTATION_EXAMPLES_MESH_IO_H
 #define DISK_SEGMENTATION_EXAMPLES_MESH_IO_H
 
+#include "input_file.h"
+#include "mesh_readers.h"
 #include "polygon_triangulation.h"
 #include "tool_error.h"
 
-#include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
@@ -20,20 +21,18 @@
 
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <cstdio>
-#include <fstream>
-#include <istream>
 #include <functional>
 #include <limits>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <tuple>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -71,10 +70,15 @@ std::string soup_reference_problem(const std::vector<Point>& points,
 }
 
 // Names the first reason why the soup is not a manifold, consistently
-// oriented triangle mesh; empty if it is one.
+// oriented triangle mesh; empty if it is one. With `split_pinched_vertices`,
+// a vertex whose faces form several fans (a pinched vertex) is no problem:
+// each fan but the first gets its own copy of the vertex (same position),
+// appended to `points`, and the number of copies is added to the count.
+// Faces keep their order and their corners' positions.
 template <typename Point>
-std::string triangle_soup_problem(const std::vector<Point>& points,
-                                  const std::vector<std::vector<std::size_t> >& polygons)
+std::string triangle_soup_problem(std::vector<Point>& points,
+                                  std::vector<std::vector<std::size_t> >& polygons,
+                                  std::size_t* split_pinched_vertices = nullptr)
 {
   if(polygons.empty())
     return "the mesh has no face";
@@ -172,15 +176,27 @@ std::string triangle_soup_problem(const std::vector<Point>& points,
     i = j;
   }
   std::vector<std::uint32_t> first_fan(points.size(), std::numeric_limits<std::uint32_t>::max());
+  std::unordered_map<std::uint32_t, std::size_t> copy_of_fan;
   for(std::uint32_t c = 0; c < fan.size(); ++c)
   {
-    const std::size_t v = polygons[c / 3][c % 3];
+    std::size_t& v = polygons[c / 3][c % 3];
     const std::uint32_t root = find(c);
     if(first_fan[v] == std::numeric_limits<std::uint32_t>::max())
       first_fan[v] = root;
     else if(first_fan[v] != root)
-      return "the mesh is not manifold: the faces around vertex #" + std::to_string(v) +
-             " form more than one fan (a pinched vertex)";
+    {
+      if(split_pinched_vertices == nullptr)
+        return "the mesh is not manifold: the faces around vertex #" + std::to_string(v) +
+               " form more than one fan (a pinched vertex)";
+      const auto inserted = copy_of_fan.emplace(root, points.size());
+      if(inserted.second)
+      {
+        const Point copy = points[v];
+        points.push_back(copy);
+        ++*split_pinched_vertices;
+      }
+      v = inserted.first->second;
+    }
   }
   return std::string();
 }
@@ -200,6 +216,8 @@ struct Read_options
   // Inputs that are not regular files (pipes, devices) are refused unless
   // this is set: they may never end.
   bool allow_special_input = false;
+  // Such an input, when allowed, is refused beyond this size.
+  std::uint64_t max_input_bytes = std::uint64_t(4) << 30;
 };
 
 // What reading changed; all zero when the file was used as it is.
@@ -211,193 +229,29 @@ struct Read_changes
   std::size_t faces_added = 0;         // by the triangulation
   std::size_t vertices_removed = 0;    // merged or isolated, net of the ones the repair duplicated
   std::size_t vertices_added = 0;      // duplicated by the repair to make the mesh manifold
+  std::size_t pinched_vertices_split = 0;  // vertex copies given to the extra fans of pinched vertices
 };
 
-namespace internal {
-
-// Splits `line` at blanks, dropping a '#' comment.
-inline void split_tokens(const std::string& line, std::vector<std::string_view>& tokens)
-{
-  tokens.clear();
-  const std::size_t end = (std::min)(line.find('#'), line.size());
-  std::size_t i = 0;
-  while(i < end)
-  {
-    while(i < end && std::isspace(static_cast<unsigned char>(line[i])))
-      ++i;
-    const std::size_t start = i;
-    while(i < end && !std::isspace(static_cast<unsigned char>(line[i])))
-      ++i;
-    if(i > start)
-      tokens.emplace_back(line.data() + start, i - start);
-  }
-}
-
-inline bool parse_number(std::string_view token, double& value)
-{
-  const char* first = token.data();
-  if(!token.empty() && token[0] == '+')
-    ++first;
-  const auto result = std::from_chars(first, token.data() + token.size(), value);
-  if(result.ptr != token.data() + token.size())
-    return false;
-  // 1e400 or 1e-400: strtod gives infinity (named later as a non-finite
-  // coordinate) or zero, as a user would expect.
-  if(result.ec == std::errc::result_out_of_range)
-    value = std::strtod(std::string(token).c_str(), nullptr);
-  return result.ec == std::errc() || result.ec == std::errc::result_out_of_range;
-}
-
-inline bool parse_index(std::string_view token, std::size_t& value)
-{
-  unsigned long long v = 0;
-  const auto result = std::from_chars(token.data(), token.data() + token.size(), v);
-  value = static_cast<std::size_t>(v);
-  return result.ec == std::errc() && result.ptr == token.data() + token.size();
-}
-
-} // namespace internal
-
-// Reads an ASCII OFF file (OFF, COFF, NOFF, CNOFF, STOFF...: the values
-// after a vertex's three coordinates and after a face's indices, such as
-// colors and normals, are ignored), one vertex or face per line. Our own
-// reader: CGAL 5.5's converts a negative face size to an unsigned integer
-// (undefined behavior, found by the fuzzer), and on a 2.2M-face file the
-// whole read (parse, check, build the mesh) drops from 4.0 s to 2.4 s.
-template <typename Point>
-void read_OFF_soup(std::istream& in, const std::string& name, std::vector<Point>& points,
-                   std::vector<std::vector<std::size_t> >& polygons)
-{
-  std::string line;
-  std::vector<std::string_view> tokens;
-  std::size_t line_number = 0;
-  auto fail = [&](const std::string& why) {
-    throw Tool_error("'" + name + "' is not a valid .off file (line " + std::to_string(line_number) + ": " + why + ")");
-  };
-  // The next line with a token; false at the end of the file.
-  auto next_tokens = [&]() {
-    while(std::getline(in, line))
-    {
-      ++line_number;
-      internal::split_tokens(line, tokens);
-      if(!tokens.empty())
-        return true;
-    }
-    return false;
-  };
-
-  if(!next_tokens())
-    throw Tool_error("'" + name + "' is not a valid .off file (it is empty)");
-  const std::string_view keyword = tokens[0];
-  if(keyword.size() < 3 || keyword.substr(keyword.size() - 3) != "OFF")
-    fail("the file does not start with an OFF keyword");
-  if(keyword.find_first_of("4n") != std::string_view::npos)  // 4OFF, nOFF: other dimensions
-    fail("only 3D OFF files are supported");
-  std::size_t first_count = 1;
-  if(tokens.size() >= 2 && tokens[1] == "BINARY")
-    fail("binary OFF is not supported; convert it to ASCII");
-  if(tokens.size() == 1)
-  {
-    if(!next_tokens())
-      fail("the vertex and face counts are missing");
-    first_count = 0;
-  }
-  std::size_t number_of_vertices = 0, number_of_faces = 0;
-  if(tokens.size() < first_count + 2 || !internal::parse_index(tokens[first_count], number_of_vertices) ||
-     !internal::parse_index(tokens[first_count + 1], number_of_faces))
-    fail("expected the numbers of vertices and faces");
-
-  // Counts are only trusted as far as the file backs them.
-  const std::size_t reserve_limit = std::size_t(1) << 20;
-  points.clear();
-  polygons.clear();
-  points.reserve((std::min)(number_of_vertices, reserve_limit));
-  polygons.reserve((std::min)(number_of_faces, reserve_limit));
-  double xyz[3];
-  for(std::size_t v = 0; v < number_of_vertices; ++v)
-  {
-    if(!next_tokens())
-      fail("the file ends after " + std::to_string(v) + " of its " + std::to_string(number_of_vertices) +
-           " vertices");
-    if(tokens.size() < 3 || !internal::parse_number(tokens[0], xyz[0]) || !internal::parse_number(tokens[1], xyz[1]) ||
-       !internal::parse_number(tokens[2], xyz[2]))
-      fail("vertex #" + std::to_string(v) + " does not start with three numbers");
-    points.emplace_back(xyz[0], xyz[1], xyz[2]);
-  }
-  for(std::size_t f = 0; f < number_of_faces; ++f)
-  {
-    if(!next_tokens())
-      fail("the file ends after " + std::to_string(f) + " of its " + std::to_string(number_of_faces) + " faces");
-    std::size_t size = 0;
-    if(!internal::parse_index(tokens[0], size) || size > tokens.size() - 1)
-      fail("face #" + std::to_string(f) + " does not start with its number of vertices followed by as many indices");
-    std::vector<std::size_t> polygon(size);
-    for(std::size_t i = 0; i < size; ++i)
-      if(!internal::parse_index(tokens[i + 1], polygon[i]))
-        fail("face #" + std::to_string(f) + " has an index that is not a non-negative integer");
-    polygons.push_back(std::move(polygon));
-  }
-}
-
-// CGAL 5.5's PLY reader dereferences a missing element when a `property`
-// line comes before any `element` line; such headers are refused here.
-inline void check_PLY_header(std::istream& in, const std::string& name)
-{
-  const std::istream::pos_type start = in.tellg();
-  std::string line;
-  std::vector<std::string_view> tokens;
-  bool element_seen = false;
-  while(std::getline(in, line))
-  {
-    internal::split_tokens(line, tokens);
-    if(tokens.empty())
-      continue;
-    if(tokens[0] == "end_header")
-      break;
-    if(tokens[0] == "element")
-      element_seen = true;
-    else if(tokens[0] == "property" && !element_seen)
-      throw Tool_error("'" + name + "' is not a valid .ply file (a property comes before any element)");
-  }
-  in.clear();
-  in.seekg(start);
-}
-
 // Reads a polygon soup in the format named by `ext` (off, obj, ply, stl, ts)
-// from `in`, opened in binary mode. Throws Tool_error naming `name`.
+// from the file's `bytes` (see mesh_readers.h). Throws Tool_error naming `name`.
 template <typename Point>
-void read_polygon_soup_from(std::istream& in, const std::string& ext, const std::string& name,
+void read_polygon_soup_from(std::string_view bytes, const std::string& ext, const std::string& name,
                             std::vector<Point>& points, std::vector<std::vector<std::size_t> >& polygons)
 {
-  bool ok = false;
-  try
-  {
-    if(ext == "off")
-    {
-      read_OFF_soup(in, name, points, polygons);
-      ok = true;
-    }
-    else if(ext == "obj") ok = CGAL::IO::read_OBJ(in, points, polygons);
-    else if(ext == "ply")
-    {
-      check_PLY_header(in, name);
-      ok = CGAL::IO::read_PLY(in, points, polygons);
-    }
-    else if(ext == "stl") ok = CGAL::IO::read_STL(in, points, polygons);
-    else if(ext == "ts") ok = CGAL::IO::read_GOCAD(in, points, polygons);
-    else
-      throw Tool_error("'" + name + "': unknown mesh format '" + ext + "' (supported: .off .obj .ply .stl .ts)");
-  }
-  catch(const Tool_error&)
-  {
-    throw;
-  }
-  catch(const std::exception& e)
-  {
-    throw Tool_error("'" + name + "' is not a valid ." + ext + " file (" + e.what() + ")");
-  }
-  if(!ok)
-    throw Tool_error("'" + name + "' is not a valid ." + ext + " file (it may be empty or truncated)");
+  points.clear();
+  polygons.clear();
+  if(ext == "off")
+    read_OFF_soup(bytes, name, points, polygons);
+  else if(ext == "obj")
+    read_OBJ_soup(bytes, name, points, polygons);
+  else if(ext == "ply")
+    read_PLY_soup(bytes, name, points, polygons);
+  else if(ext == "stl")
+    read_STL_soup(bytes, name, points, polygons);
+  else if(ext == "ts")
+    read_TS_soup(bytes, name, points, polygons);
+  else
+    throw Tool_error("'" + name + "': unknown mesh format '" + ext + "' (supported: .off .obj .ply .stl .ts)");
 }
 
 // Applies `options` to a soup just read, then checks that it is a manifold,
@@ -444,7 +298,9 @@ Read_changes prepare_triangle_soup(std::vector<Point>& points, std::vector<std::
     polygons.swap(triangles);
   }
 
-  const std::string problem = triangle_soup_problem(points, polygons);
+  // Pinched vertices are split without being asked: it moves no point and
+  // changes no face, and the atlas cuts the mesh there anyway.
+  const std::string problem = triangle_soup_problem(points, polygons, &changes.pinched_vertices_split);
   if(!problem.empty())
   {
     std::string hint;
@@ -459,7 +315,7 @@ Read_changes prepare_triangle_soup(std::vector<Point>& points, std::vector<std::
   return changes;
 }
 
-// Reads a triangle mesh in any format CGAL reads (OFF, OBJ, PLY, STL, TS),
+// Reads a triangle mesh (OFF, OBJ, PLY, STL, TS),
 // keeping the file's face and vertex order unless `options` change the
 // mesh. Throws Tool_error with a one-line message naming the problem.
 template <typename Mesh>
@@ -469,15 +325,16 @@ Read_changes read_triangle_mesh(const std::string& path, Mesh& mesh, const Read_
     typename boost::property_map<Mesh, CGAL::vertex_point_t>::type>::value_type Point;
 
   const std::string ext = lower_extension(path);
-  std::ifstream in(path, std::ios::binary);
-  if(!in)
-    throw Tool_error("cannot open '" + path + "' for reading");
   if(ext != "off" && ext != "obj" && ext != "ply" && ext != "stl" && ext != "ts")
     throw Tool_error("'" + path + "': unknown mesh format '" + ext + "' (supported: .off .obj .ply .stl .ts)");
 
   std::vector<Point> points;
   std::vector<std::vector<std::size_t> > polygons;
-  read_polygon_soup_from(in, ext, path, points, polygons);
+  {
+    // The file's bytes are freed before the mesh is built.
+    const std::string bytes = read_input_file(path, options.allow_special_input, options.max_input_bytes);
+    read_polygon_soup_from(bytes, ext, path, points, polygons);
+  }
   const Read_changes changes = prepare_triangle_soup(points, polygons, options, path);
   mesh.clear();
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, mesh);

@@ -79,7 +79,6 @@ expect_error 1 "unknown mesh format" "$work/mesh.txt"
 expect_error 1 "4 vertices" "$work/quad.off"
 expect_error 1 "refers to vertex|not a valid" "$work/badindex.off"
 expect_error 1 "not manifold" "$work/nonmanifold_edge.off"
-expect_error 1 "not manifold" "$work/pinched.off"
 expect_error 1 "oriented inconsistently" "$work/flipped.off"
 expect_error 1 "number_of_seeds" "$data/elephant.off" -n 0
 expect_error 1 "number_of_subsamples" "$data/elephant.off" -k 1
@@ -104,7 +103,6 @@ expect_error 1 "face #0 does not start with its number of vertices" "$work/negat
 # A face listed twice, inside a two-face strip.
 printf 'OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 2 1 3\n3 0 1 2\n' > "$work/duplicated_face.off"
 expect_error 1 "face #2 duplicates face #0" "$work/duplicated_face.off"
-expect_error 1 "vertex #0 form more than one fan" "$work/pinched.off"
 
 # --- repairs on request: each bad mesh above becomes a valid atlas, and
 # every output follows the repaired mesh (one patch id per output face).
@@ -129,6 +127,12 @@ expect_repaired 3 "$work/nonmanifold_edge.off" --repair
 grep -q '"vertices_added": 0' "$work/r.json" && fail "cutting the non-manifold edge added no vertex" || pass
 expect_repaired 2 "$work/pinched.off" --repair
 expect_repaired 2 "$work/flipped.off" --repair
+# A pinched vertex is split without being asked: same faces, in order, one
+# more vertex at the same place.
+expect_repaired 2 "$work/pinched.off"
+grep -q '"pinched_vertices_split": 1' "$work/r.json" && pass || fail "report does not count the split vertex"
+[ "$(grep -c '^v ' "$work/r.obj")" -eq 6 ] && pass || fail "the split vertex was not copied once"
+grep -q "1 pinched vertices split" "$work/out.txt" && pass || fail "the summary does not say the vertex was split"
 expect_repaired 2 "$work/quad.off" --triangulate
 # An L-shaped hexagon: a fan from its reflex corner's neighbour would leave
 # the polygon; the planar triangulation stays inside it.

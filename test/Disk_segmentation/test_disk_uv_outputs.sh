@@ -138,6 +138,9 @@ for bad in "-n -1" "--seeds=-1" "-n 99999999999999999999999" "--max-chart-faces 
   expect_refused 2 "non-negative integer|too large" dir/x.off $bad --patch-ids ids.txt
   [ -e ids.txt ] && fail "'$bad' wrote an output" || pass
 done
+# Parameters are checked before the input is read.
+expect_refused 1 "number_of_subsamples" missing.off -k 1
+expect_refused 1 "padding" missing.off --padding -1
 # A good run still writes everything.
 run dir/x.off -o good.obj --report good.json --patch-ids good.txt && pass || fail "good run failed: $(cat err.txt)"
 [ "$(wc -l < good.txt)" -eq 8 ] && pass || fail "patch ids not written"

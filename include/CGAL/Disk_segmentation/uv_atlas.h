@@ -44,6 +44,30 @@ struct Atlas_report
 
 /// \ingroup PkgDiskSegmentationRef
 ///
+/// Checks every parameter that `uv_atlas()` reads, without a mesh, so that a
+/// program can refuse a bad parameter before it reads or computes anything.
+/// `uv_atlas()` runs the same checks first.
+///
+/// @tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+/// @param np the named parameters that will be given to `uv_atlas()`
+///
+/// @throws Input_error naming the first parameter out of its range.
+template <typename NamedParameters = parameters::Default_named_parameters>
+void check_uv_atlas_parameters(const NamedParameters& np = parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  internal::checked_number_of_seeds(
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_seeds), std::size_t(10)));
+  internal::checked_number_of_subsamples(
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_subsamples), std::size_t(5)));
+  internal::merge_threshold_parameter(np);
+  internal::parameterization_settings(np);
+  internal::packing_settings(np);
+}
+
+/// \ingroup PkgDiskSegmentationRef
+///
 /// Computes a complete UV atlas of `tm`: `segment_into_disks()`, then
 /// `parameterize_patches()`, then `pack_patches()`. Every chart is a
 /// topological disk with valid UVs (no flipped or degenerate triangle, simple
@@ -87,9 +111,8 @@ Atlas_report uv_atlas(const TriangleMesh& tm, UVMap uv_map, const NamedParameter
 
   CGAL::Real_timer total;
   total.start();
-  // Later stages' parameters are checked now, before anything is written.
-  internal::parameterization_settings(np);
-  internal::packing_settings(np);
+  // Every stage's parameters are checked now, before anything is written.
+  check_uv_atlas_parameters(np);
   Atlas_report report;
   internal::Progress progress = internal::Progress::from(np);
 

@@ -25,7 +25,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -71,11 +70,10 @@ inline Outcome run(const std::uint8_t* data, std::size_t size)
   Mesh mesh;
   try
   {
-    std::istringstream in(bytes, std::ios::binary);
     std::vector<K::Point_3> points;
     std::vector<std::vector<std::size_t> > polygons;
     const std::string ext = guess_extension(bytes);
-    disk_uv::read_polygon_soup_from(in, ext, "fuzz input", points, polygons);
+    disk_uv::read_polygon_soup_from(bytes, ext, "fuzz input", points, polygons);
     disk_uv::prepare_triangle_soup(points, polygons, options, "fuzz input");
     CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, mesh);
   }

@@ -1,0 +1,137 @@
+// Copyright (c) 2026 The Disk_segmentation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Reads the disk_uv tool's input file into memory, so that its readers
+// always know how many bytes are left. Only regular files are read unless
+// the caller allows other inputs: opening a FIFO without a writer blocks
+// forever, and a device such as /dev/zero never ends.
+
+#ifndef DISK_SEGMENTATION_EXAMPLES_INPUT_FILE_H
+#define DISK_SEGMENTATION_EXAMPLES_INPUT_FILE_H
+
+#include "text_scanner.h"
+#include "tool_error.h"
+
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
+#include <new>
+#include <string>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace disk_uv {
+
+namespace internal {
+
+inline const char* file_kind(mode_t mode)
+{
+  if(S_ISFIFO(mode))
+    return "a FIFO";
+  if(S_ISCHR(mode))
+    return "a character device";
+  if(S_ISBLK(mode))
+    return "a block device";
+  if(S_ISSOCK(mode))
+    return "a socket";
+  return "not a file";
+}
+
+class File_descriptor
+{
+public:
+  explicit File_descriptor(int fd) : fd_(fd) {}
+  File_descriptor(const File_descriptor&) = delete;
+  File_descriptor& operator=(const File_descriptor&) = delete;
+  ~File_descriptor() { if(fd_ >= 0) ::close(fd_); }
+  int get() const { return fd_; }
+
+private:
+  int fd_;
+};
+
+// Appends at most `wanted` bytes of `fd` to `bytes`; returns the number
+// read, less than `wanted` only at the end of the input.
+inline std::size_t read_up_to(int fd, std::string& bytes, std::size_t wanted, const std::string& path)
+{
+  const std::size_t start = bytes.size();
+  bytes.resize(start + wanted);
+  std::size_t done = 0;
+  while(done < wanted)
+  {
+    const ssize_t got = ::read(fd, &bytes[start + done], wanted - done);
+    if(got < 0 && errno == EINTR)
+      continue;
+    if(got < 0)
+      throw Tool_error("error while reading '" + path + "' (" + std::strerror(errno) + ")");
+    if(got == 0)
+      break;
+    done += std::size_t(got);
+  }
+  bytes.resize(start + done);
+  return done;
+}
+
+} // namespace internal
+
+// The whole content of `path`. A regular file is read at its size; with
+// `allow_special_input`, another input (a FIFO, a device, a socket) is read
+// to its end, refused beyond `max_input_bytes`. Throws Tool_error.
+inline std::string read_input_file(const std::string& path, bool allow_special_input,
+                                   std::uint64_t max_input_bytes)
+{
+  // stat() before open(): opening a FIFO without a writer would block.
+  struct stat info;
+  if(::stat(path.c_str(), &info) != 0)
+    throw Tool_error("cannot open '" + path + "' for reading (" + std::strerror(errno) + ")");
+  if(S_ISDIR(info.st_mode))
+    throw Tool_error("'" + path + "' is a directory, not a mesh file");
+  const bool regular = S_ISREG(info.st_mode);
+  if(!regular && !allow_special_input)
+    throw Tool_error("'" + path + "' is not a regular file (it is " + internal::file_kind(info.st_mode) +
+                     "); --allow-special-input reads it, up to " + internal::size_text(max_input_bytes));
+
+  // O_NONBLOCK: should the path have become a FIFO since stat(), open()
+  // must not wait for a writer (it changes nothing for a regular file).
+  const internal::File_descriptor fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC | (regular ? O_NONBLOCK : 0)));
+  if(fd.get() < 0)
+    throw Tool_error("cannot open '" + path + "' for reading (" + std::strerror(errno) + ")");
+  struct stat opened;
+  if(::fstat(fd.get(), &opened) != 0 || bool(S_ISREG(opened.st_mode)) != regular)
+    throw Tool_error("'" + path + "' changed while it was being opened");
+
+  std::string bytes;
+  if(regular)
+  {
+    // A file that grows while it is read is taken at the size it had.
+    try
+    {
+      bytes.reserve(std::size_t(opened.st_size));
+    }
+    catch(const std::bad_alloc&)
+    {
+      throw Tool_error("'" + path + "' (" + std::to_string(opened.st_size) + " bytes) does not fit in memory");
+    }
+    internal::read_up_to(fd.get(), bytes, std::size_t(opened.st_size), path);
+    return bytes;
+  }
+  const std::size_t chunk = std::size_t(1) << 20;
+  for(;;)
+  {
+    const std::uint64_t room = max_input_bytes - bytes.size();
+    // One byte beyond the limit tells a full input from a longer one.
+    const std::size_t wanted = std::size_t(room < chunk ? room + 1 : chunk);
+    if(internal::read_up_to(fd.get(), bytes, wanted, path) < wanted)
+      break;
+    if(bytes.size() > max_input_bytes)
+      throw Tool_error("'" + path + "' is longer than the limit of " + internal::size_text(max_input_bytes) +
+                       " for an input that is not a regular file");
+  }
+  return bytes;
+}
+
+} // namespace disk_uv
+
+#endif // DISK_SEGMENTATION_EXAMPLES_INPUT_FILE_H
