@@ -17,6 +17,7 @@
 #include <cstring>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <system_error>
 #include <vector>
 
@@ -85,11 +86,14 @@ inline void split_tokens(std::string_view line, std::vector<std::string_view>& t
   }
 }
 
-// A decimal number as strtod reads it, except that the whole token must be
-// the number. 1e400 gives infinity (named by the callers as a non-finite
-// coordinate) and 1e-400 zero, as a user would expect.
-inline bool parse_number(std::string_view token, double& value)
+// A decimal number as strtod (strtof for a float) reads it, except that the
+// whole token must be the number. 1e400 gives infinity (named by the callers
+// as a non-finite coordinate) and 1e-400 zero, as a user would expect. A PLY
+// `float` property is read as a float: it rounds once, to float.
+template <typename Real>
+bool parse_number(std::string_view token, Real& value)
 {
+  static_assert(std::is_same<Real, double>::value || std::is_same<Real, float>::value, "double or float");
   const char* first = token.data();
   if(!token.empty() && token[0] == '+')
     ++first;
@@ -97,21 +101,13 @@ inline bool parse_number(std::string_view token, double& value)
   if(result.ptr != token.data() + token.size() || first == token.data() + token.size())
     return false;
   if(result.ec == std::errc::result_out_of_range)
-    value = std::strtod(std::string(token).c_str(), nullptr);
-  return result.ec == std::errc() || result.ec == std::errc::result_out_of_range;
-}
-
-// The same in single precision: a PLY `float` property rounds once, to float.
-inline bool parse_number(std::string_view token, float& value)
-{
-  const char* first = token.data();
-  if(!token.empty() && token[0] == '+')
-    ++first;
-  const auto result = std::from_chars(first, token.data() + token.size(), value);
-  if(result.ptr != token.data() + token.size() || first == token.data() + token.size())
-    return false;
-  if(result.ec == std::errc::result_out_of_range)
-    value = std::strtof(std::string(token).c_str(), nullptr);
+  {
+    const std::string text(token);
+    if constexpr(std::is_same<Real, float>::value)
+      value = std::strtof(text.c_str(), nullptr);
+    else
+      value = std::strtod(text.c_str(), nullptr);
+  }
   return result.ec == std::errc() || result.ec == std::errc::result_out_of_range;
 }
 

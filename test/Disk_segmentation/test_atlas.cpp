@@ -355,6 +355,50 @@ TEST(Atlas, WorksOnPolyhedron)
   EXPECT_TRUE(atlas.ok()) << atlas.summary();
 }
 
+// `fans` open fans of four triangles meeting only at their apex (a pinched
+// vertex), each in its own plane through the apex.
+Mesh pinched_fans(int fans)
+{
+  Mesh tm;
+  const Mesh::Vertex_index o = tm.add_vertex(K::Point_3(0, 0, 0));
+  for(int fan = 0; fan < fans; ++fan)
+  {
+    const double tilt = 0.9 * fan, start = 2.1 * fan;
+    std::vector<Mesh::Vertex_index> rim;
+    for(int i = 0; i <= 4; ++i)
+    {
+      const double a = start + 0.3 * i;
+      rim.push_back(tm.add_vertex(K::Point_3(std::cos(a), std::sin(a) * std::cos(tilt), std::sin(a) * std::sin(tilt))));
+    }
+    for(int i = 0; i < 4; ++i)
+      if(tm.add_face(o, rim[i], rim[i + 1]) == Mesh::null_face())
+        ADD_FAILURE() << "Surface_mesh refused a face of fan " << fan;
+  }
+  return tm;
+}
+
+TEST(Atlas, PinchedVerticesAreCutNotRejected)
+{
+  // Before: "the mesh is not manifold: the faces around vertex #0 form more
+  // than one fan". Now each fan gets its own copy of the vertex inside the
+  // package; the user's mesh is left as it is.
+  for(int fans : { 2, 3 })
+  {
+    Mesh tm = pinched_fans(fans);
+    ASSERT_EQ(tm.number_of_faces(), std::size_t(4 * fans));
+    for(DS::Parameterization_method method : TS::all_parameterization_methods)
+    {
+      SCOPED_TRACE(std::to_string(fans) + " fans, " + DS::to_string(method));
+      Mesh copy = tm;
+      const TS::Atlas a = TS::make_atlas(copy, DS::parameters::parameterization_method(method).number_of_seeds(1));
+      TS::expect_valid_atlas(copy, a);
+      // No patch holds two fans: they share no edge.
+      EXPECT_EQ(a.report.number_of_charts, std::size_t(fans));
+      EXPECT_EQ(copy.number_of_vertices(), tm.number_of_vertices());
+    }
+  }
+}
+
 TEST(Atlas, BadParametersAreRejectedBeforeAnythingIsWritten)
 {
   Mesh tm = load("eight.off");

@@ -7,11 +7,17 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
+#include <condition_variable>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <mutex>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -26,11 +32,55 @@ std::vector<std::filesystem::path> files_in(const std::string& folder)
   return files;
 }
 
-fuzz_pipeline::Outcome replay(const std::filesystem::path& file)
+// Ends the process, naming the input, when one replay runs past a limit:
+// a hang found by the fuzzer fails the suite instead of blocking it. The
+// limit is generous (the slowest input takes about a second under the
+// sanitizers); DISK_SEGMENTATION_REPLAY_TIME_LIMIT overrides it in seconds.
+class Hang_watchdog
+{
+public:
+  explicit Hang_watchdog(const std::string& input)
+    : thread_([this, input] {
+        std::unique_lock<std::mutex> lock(mutex_);
+        if(!finished_changed_.wait_for(lock, limit(), [this] { return finished_; }))
+        {
+          std::fprintf(stderr, "replay of '%s' still runs after %lld s: a hang\n", input.c_str(),
+                       static_cast<long long>(limit().count()));
+          std::abort();
+        }
+      })
+  {}
+  ~Hang_watchdog()
+  {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      finished_ = true;
+    }
+    finished_changed_.notify_all();
+    thread_.join();
+  }
+
+private:
+  static std::chrono::seconds limit()
+  {
+    const char* text = std::getenv("DISK_SEGMENTATION_REPLAY_TIME_LIMIT");
+    const long long seconds = text != nullptr ? std::atoll(text) : 0;
+    return std::chrono::seconds(seconds > 0 ? seconds : 300);
+  }
+
+  std::mutex mutex_;
+  std::condition_variable finished_changed_;
+  bool finished_ = false;
+  std::thread thread_;
+};
+
+fuzz_pipeline::Outcome replay(const std::filesystem::path& file,
+                              fuzz_pipeline::Soup_options options = fuzz_pipeline::Soup_options::FROM_HASH)
 {
   std::ifstream in(file, std::ios::binary);
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return fuzz_pipeline::run(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
+  Hang_watchdog watchdog(file.string());
+  return fuzz_pipeline::run(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size(), options);
 }
 
 } // namespace
@@ -60,6 +110,7 @@ TEST(FuzzCorpus, InputsTheFuzzerCrashedOnNoLongerCrash)
   {
     SCOPED_TRACE(file.string());
     replay(file);
+    replay(file, fuzz_pipeline::Soup_options::TRIANGULATE_ONLY);
     ++replayed;
   }
   RecordProperty("replayed", static_cast<int>(replayed));

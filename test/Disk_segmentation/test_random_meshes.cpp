@@ -528,3 +528,135 @@ TEST(RandomMeshes, DuplicatedVerticesAreDistinctVertices)
     expect_charts_within_components(tm, a);
   }
 }
+
+namespace {
+
+struct Scaled_components
+{
+  TS::Soup soup;
+  std::vector<double> face_scale;  // scale of each triangle's component
+};
+
+// Components of `scales.size()` sizes, all near the origin: a bumpy 3 x 3
+// grid (18 triangles) and a small closed sphere in turn, the k-th multiplied
+// by scales[k]. Positions relative to one another are meaningless at such
+// ratios; the shape of each component is not.
+Scaled_components components_of_scales(const std::vector<double>& scales)
+{
+  TS::Soup grid = TS::grid_with_holes(3, 3, 0);
+  for(auto& p : grid.points)
+    p[2] = 0.1 * double((int(p[0]) * int(p[1])) % 3);
+  const TS::Soup sphere = TS::uv_sphere(4, 6);
+  Scaled_components c;
+  for(std::size_t k = 0; k < scales.size(); ++k)
+  {
+    TS::Soup part = (k % 2 == 0) ? grid : sphere;
+    for(auto& p : part.points)
+      for(double& x : p)
+        x *= scales[k];
+    TS::soup_detail::append(c.soup, part, 0., 0., 0.);
+    c.face_scale.resize(c.soup.triangles.size(), scales[k]);
+  }
+  return c;
+}
+
+// No chart may have failed on a CGAL assertion: this build keeps them on,
+// but where they are off (release builds), the same input runs past them.
+void expect_no_assertion_failure(const Atlas& a)
+{
+  for(const DS::Chart_report& r : a.report.parameterization.charts)
+    EXPECT_EQ(r.problem.find("assertion"), std::string::npos) << "chart " << r.patch << ": " << r.problem;
+}
+
+// expect_valid_atlas(), but with the 3D coordinates of each face divided by
+// its component's scale. The checker calls a face degenerate when its
+// UV-to-3D area ratio is under 1e-12 of the mean over all faces: with
+// components 1e300 apart in 3D area, every atlas would fail that. All other
+// checks read only the UVs, which are left as they are.
+void expect_valid_atlas_per_component(const Mesh& tm, const Atlas& a, const std::vector<double>& face_scale)
+{
+  const TS::Partition_report partition = TS::check_disk_partition(tm, a.patch);
+  EXPECT_TRUE(partition.ok) << partition.problem;
+  EXPECT_EQ(partition.number_of_patches, a.report.number_of_charts);
+  TS::Atlas_soup soup = TS::atlas_soup_from_mesh(tm, a.patch, a.uv);
+  ASSERT_EQ(soup.size(), face_scale.size());
+  for(std::size_t f = 0; f < soup.size(); ++f)
+    for(auto& p : soup.xyz[f])
+      for(double& x : p)
+        x /= face_scale[f];
+  const TS::Atlas_report atlas = TS::check_atlas_soup(soup, 512);
+  EXPECT_TRUE(atlas.ok()) << atlas.summary();
+  EXPECT_EQ(atlas.faces_zero_3d_area, 0u);
+  EXPECT_EQ(a.report.parameterization.number_of_invalid_charts, 0u);
+}
+
+} // namespace
+
+TEST(RandomMeshes, ComponentsOfWildlyDifferentScalesGiveValidAtlases)
+{
+  // One frame for the whole mesh once collapsed the small copy of the first
+  // case to a point (shared center), on which LSCM wrote out of bounds, and
+  // underflowed the lengths and areas of the 1e-150 one (shared scale).
+  const std::vector<std::vector<double> > cases = {
+    { 1e20, 1e-20 },
+    { 1e-30, 1., 1e30 },
+    { 1e-150, 1e-30, 1., 1e30, 1e150 } };
+  for(const std::vector<double>& scales : cases)
+  {
+    const Scaled_components c = components_of_scales(scales);
+    for(DS::Parameterization_method method : TS::all_parameterization_methods)
+      for(DS::Packing_method packer : { DS::Packing_method::TIGHT, DS::Packing_method::GRID })
+      {
+        std::ostringstream what;
+        what << scales.size() << " components, " << DS::to_string(method)
+             << (packer == DS::Packing_method::TIGHT ? ", tight" : ", grid");
+        SCOPED_TRACE(what.str());
+        Mesh tm;
+        TS::to_mesh(c.soup, tm);
+        Atlas a;
+        ASSERT_NO_THROW(a = make_atlas(tm, DS::parameters::parameterization_method(method).packing_method(packer)));
+        expect_valid_atlas_per_component(tm, a, c.face_scale);
+        expect_charts_within_components(tm, a);
+        expect_no_assertion_failure(a);
+        // A component whose shape was lost to rounding would only have
+        // charts that fail every method, split down to single triangles.
+        for(const DS::Chart_report& r : a.report.parameterization.charts)
+          EXPECT_GT(r.faces, 1u) << "chart " << r.patch << ": " << r.problem;
+
+        // Without the fallback, charts may stay invalid, but nothing may crash.
+        Mesh raw;
+        TS::to_mesh(c.soup, raw);
+        try
+        {
+          make_atlas(raw, DS::parameters::parameterization_method(method).packing_method(packer).use_fallback(false));
+        }
+        catch(const DS::Input_error&)
+        {
+          // Packing refuses invalid charts (e.g. of zero UV area).
+        }
+      }
+  }
+}
+
+TEST(RandomMeshes, ComponentCollapsedToAPointGivesAValidAtlas)
+{
+  // A grid and a copy of it whose vertices all lie at one point: no method
+  // can flatten the copy's charts (LSCM once wrote out of bounds on them),
+  // the fallback must still give a valid atlas.
+  TS::Soup s = components_of_scales({ 1. }).soup;
+  TS::Soup point = s;
+  for(auto& p : point.points)
+    p = {{ 1., 1., 1. }};
+  TS::soup_detail::append(s, point, 0., 0., 0.);
+  for(DS::Parameterization_method method : TS::all_parameterization_methods)
+  {
+    SCOPED_TRACE(DS::to_string(method));
+    Mesh tm;
+    TS::to_mesh(s, tm);
+    Atlas a;
+    ASSERT_NO_THROW(a = make_atlas(tm, DS::parameters::parameterization_method(method)));
+    expect_valid_atlas(tm, a, 512);
+    expect_charts_within_components(tm, a);
+    expect_no_assertion_failure(a);
+  }
+}

@@ -508,9 +508,9 @@ TEST(Errors, NonTriangleFace)
   expect_untouched(tm, p);
 }
 
-TEST(Errors, NonManifoldVertex)
+TEST(Segmentation, PinchedVertexIsCutNotRejected)
 {
-  // Two triangles sharing only vertex 0.
+  // Two triangles sharing only vertex 0: each is its own disk.
   Mesh tm;
   const auto o = tm.add_vertex(K::Point_3(0, 0, 0));
   const auto a = tm.add_vertex(K::Point_3(1, 0, 0)), b = tm.add_vertex(K::Point_3(1, 1, 0));
@@ -518,9 +518,10 @@ TEST(Errors, NonManifoldVertex)
   ASSERT_NE(tm.add_face(o, a, b), Mesh::null_face());
   ASSERT_NE(tm.add_face(o, c, d), Mesh::null_face());
   Patches<Mesh> p(tm);
-  const std::string message = error_of([&] { DS::segment_into_disks(tm, p.map); });
-  EXPECT_NE(message.find("not manifold"), std::string::npos) << message;
-  expect_untouched(tm, p);
+  EXPECT_EQ(DS::segment_into_disks(tm, p.map, DS::parameters::number_of_seeds(1)), 2u);
+  const TS::Partition_report r = TS::check_disk_partition(tm, p.map);
+  EXPECT_TRUE(r.ok) << r.problem;
+  EXPECT_EQ(r.number_of_patches, 2u);
 }
 
 TEST(Errors, NonFiniteCoordinate)

@@ -282,7 +282,18 @@ Atlas_quality atlas_quality(const TriangleMesh& tm, UVMap uv_map, FacePatchMap f
   {
     jacobians[f] = internal::triangle_jacobian(m.point(f, 0), m.point(f, 1), m.point(f, 2),
                                                uv[f][0], uv[f][1], uv[f][2]);
-    const internal::Triangle_jacobian& j = jacobians[f];
+    internal::Triangle_jacobian& j = jacobians[f];
+    // Each component has its own frame: measures that compare faces across
+    // charts need the common one (a component too small to register in it
+    // gets zero 3D area, as it would at one shared scale).
+    const double unit = m.common_unit(f);
+    if(unit != 1.)
+    {
+      j.area_3d *= unit * unit;
+      j.determinant /= unit * unit;
+      j.sigma_max /= unit;
+      j.sigma_min /= unit;
+    }
     ++chart_faces[ids[f]];
     chart_area_3d[ids[f]] += j.area_3d;
     // Unsigned: a flipped face still covers its UV area.
@@ -387,7 +398,7 @@ Atlas_quality atlas_quality(const TriangleMesh& tm, UVMap uv_map, FacePatchMap f
             agree = (uv[g][k] == uv[f][(i + e) % 3]);
       }
       if(!agree)
-        seam += m.edge_length(f, i);
+        seam += m.edge_length(f, i) * m.common_unit(f);
     }
   q.cut_length = total_3d > 0 ? seam / std::sqrt(total_3d) : 0.;
   q.seam_length = seam / m.normalization_scale;  // back to the input's units

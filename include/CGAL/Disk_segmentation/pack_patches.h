@@ -24,6 +24,7 @@
 #include <cmath>
 #include <cstddef>
 #include <iterator>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <type_traits>
@@ -150,6 +151,8 @@ struct Chart_set
   std::vector<Packing_point> origin;
   std::vector<std::size_t> first_face;       // P + 1 entries
   std::vector<double> uv_area, surface_area;
+  // 3D areas are measured with lengths multiplied by this power of two.
+  double length_scale = 1.;
   std::vector<Packing_rotation> rotation;    // chosen frame of each chart
   std::vector<Packing_box> box;              // bounding box of the chart's UVs in that frame
 
@@ -197,6 +200,29 @@ void collect_charts(const TriangleMesh& tm, const FacePatchMap& face_patch_map, 
   charts.origin.assign(number_of_patches, Packing_point());
   std::vector<std::size_t> cursor(charts.first_face.begin(), charts.first_face.end() - 1);
   const auto coordinates_of = make_coordinates_reader(tm, np);
+  // Only ratios of 3D areas matter: they are measured with the mesh's
+  // bounding box brought to unit size by a power of two (exact), so that
+  // coordinates of 1e150 do not overflow squared quantities (tiny charts of
+  // a mesh that also has huge ones underflow, and get the floor below).
+  charts.length_scale = 1.;
+  if(with_surface_area)
+  {
+    std::array<double, 3> lo, hi;
+    lo.fill(std::numeric_limits<double>::infinity());
+    hi.fill(-std::numeric_limits<double>::infinity());
+    for(face_descriptor f : charts.faces)
+      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm), tm))
+      {
+        const std::array<double, 3> x = coordinates_of(target(h, tm));
+        for(int k = 0; k < 3; ++k)
+        {
+          lo[k] = (std::min)(lo[k], x[k]);
+          hi[k] = (std::max)(hi[k], x[k]);
+        }
+      }
+    charts.length_scale = unit_scale((std::max)(hi[0] - lo[0], (std::max)(hi[1] - lo[1], hi[2] - lo[2])));
+  }
+  const double length_scale = charts.length_scale;
   for(std::size_t i = 0; i < number_of_faces; ++i)
   {
     const std::size_t p = charts.patch_of[i];
@@ -217,8 +243,10 @@ void collect_charts(const TriangleMesh& tm, const FacePatchMap& face_patch_map, 
       const std::array<double, 3> x = coordinates_of(target(h0, tm));
       const std::array<double, 3> y = coordinates_of(target(h1, tm));
       const std::array<double, 3> z = coordinates_of(target(h2, tm));
-      const double ux = y[0] - x[0], uy = y[1] - x[1], uz = y[2] - x[2];
-      const double vx = z[0] - x[0], vy = z[1] - x[1], vz = z[2] - x[2];
+      const double ux = (y[0] - x[0]) * length_scale, uy = (y[1] - x[1]) * length_scale,
+                 uz = (y[2] - x[2]) * length_scale;
+      const double vx = (z[0] - x[0]) * length_scale, vy = (z[1] - x[1]) * length_scale,
+                 vz = (z[2] - x[2]) * length_scale;
       const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
       charts.surface_area[p] += 0.5 * std::sqrt(nx * nx + ny * ny + nz * nz);
     }
@@ -506,7 +534,8 @@ Packing_report pack_patches(const TriangleMesh& tm,
   for(std::size_t p = 0; p < charts.size(); ++p)
     report.efficiency += placement[p].scale * placement[p].scale * charts.uv_area[p];
   report.number_of_charts = charts.size();
-  report.texels_per_unit = tight ? global_scale * settings.resolution : 0.;
+  // Texels per unit of the input's length, not of the scaled one.
+  report.texels_per_unit = tight ? global_scale * settings.resolution * charts.length_scale : 0.;
   return report;
 }
 

@@ -53,7 +53,12 @@ inline std::string guess_extension(const std::string& bytes)
   return "obj";
 }
 
-inline Outcome run(const std::uint8_t* data, std::size_t size)
+// Where --repair and --triangulate come from: the hash (as for every other
+// parameter), or --triangulate alone, forced (to replay an input that hung
+// in the triangulation under whatever its hash draws).
+enum class Soup_options { FROM_HASH, TRIANGULATE_ONLY };
+
+inline Outcome run(const std::uint8_t* data, std::size_t size, Soup_options soup_options = Soup_options::FROM_HASH)
 {
   typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
   typedef CGAL::Surface_mesh<K::Point_3> Mesh;
@@ -65,8 +70,8 @@ inline Outcome run(const std::uint8_t* data, std::size_t size)
     hash = (hash ^ c) * 1099511628211ull;
 
   disk_uv::Read_options options;
-  options.repair = (hash >> 1) & 1;
-  options.triangulate = (hash >> 2) & 1;
+  options.repair = soup_options == Soup_options::FROM_HASH && ((hash >> 1) & 1);
+  options.triangulate = soup_options == Soup_options::TRIANGULATE_ONLY || ((hash >> 2) & 1);
   Mesh mesh;
   try
   {

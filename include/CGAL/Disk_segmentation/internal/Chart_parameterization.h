@@ -24,10 +24,12 @@
 #include <CGAL/Surface_mesh_parameterization/Mean_value_coordinates_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -66,6 +68,43 @@ inline Chart make_chart(const Indexed_triangle_mesh& m, const std::vector<Index>
 }
 
 constexpr const char* non_finite_uv = "non-finite UV";
+
+// Whether a vertex of the closed polygon `border` lies within `tolerance` of
+// a border segment it is not an end of. Packing moves every UV by a
+// similarity rounded to doubles: such a border could touch itself once
+// packed (two copies of a vertex split in 3D, laid out 1e-17 apart, met).
+// Each segment is tested against the vertices in its x-range, sorted.
+template <typename Point_2>
+bool border_nearly_touches_itself(const std::vector<Point_2>& border, double tolerance)
+{
+  const std::size_t n = border.size();
+  if(n < 4)
+    return false;
+  std::vector<std::pair<double, std::size_t> > by_x(n);
+  for(std::size_t i = 0; i < n; ++i)
+    by_x[i] = std::make_pair(border[i].x(), i);
+  std::sort(by_x.begin(), by_x.end());
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    const Point_2& a = border[k];
+    const Point_2& b = border[(k + 1) % n];
+    const double dx = b.x() - a.x(), dy = b.y() - a.y(), length2 = dx * dx + dy * dy;
+    const double lo = (std::min)(a.x(), b.x()) - tolerance, hi = (std::max)(a.x(), b.x()) + tolerance;
+    for(auto it = std::lower_bound(by_x.begin(), by_x.end(), std::make_pair(lo, std::size_t(0)));
+        it != by_x.end() && it->first <= hi; ++it)
+    {
+      const std::size_t i = it->second;
+      if(i == k || i == (k + 1) % n)
+        continue;
+      const Point_2& p = border[i];
+      // The closest point of the segment, clamped to its ends.
+      const double t = length2 > 0 ? (std::max)(0., (std::min)(1., ((p.x() - a.x()) * dx + (p.y() - a.y()) * dy) / length2)) : 0.;
+      if(std::hypot(p.x() - (a.x() + t * dx), p.y() - (a.y() + t * dy)) <= tolerance)
+        return true;
+    }
+  }
+  return false;
+}
 
 // What is wrong with a chart's UVs, or an empty string. A chart is valid when
 // its UVs are finite, every triangle keeps the 3D winding with a non-negligible
@@ -123,6 +162,8 @@ inline std::string chart_uv_problem(const Chart& c, const std::vector<std::array
     polygon.push_back(Point_2(uv[v][0], uv[v][1]));
   if(polygon.size() >= 4 && !CGAL::is_simple_2(polygon.begin(), polygon.end()))
     return "self-intersecting UV border";
+  if(border_nearly_touches_itself(polygon, 1e-10 * chart_size))
+    return "UV border nearly touches itself";
   return std::string();
 }
 
@@ -227,8 +268,13 @@ inline std::string parameterize_chart_with(const Indexed_triangle_mesh& m, Chart
   mesh.reserve(static_cast<Chart_mesh::size_type>(c.vertices.size()),
                static_cast<Chart_mesh::size_type>(3 * c.triangles.size()),
                static_cast<Chart_mesh::size_type>(c.triangles.size()));
+  std::vector<std::array<double, 3> > points;
+  points.reserve(c.vertices.size());
   for(Index v : c.vertices)
+  {
+    points.push_back(m.points[v]);
     mesh.add_vertex(Point_3(m.points[v][0], m.points[v][1], m.points[v][2]));
+  }
   for(const auto& t : c.triangles)
     if(mesh.add_face(Chart_mesh::Vertex_index(t[0]), Chart_mesh::Vertex_index(t[1]), Chart_mesh::Vertex_index(t[2])) ==
        Chart_mesh::null_face())
@@ -275,6 +321,13 @@ inline std::string parameterize_chart_with(const Indexed_triangle_mesh& m, Chart
     return std::string();
   }
 
+  // A chart whose vertices all coincide has no flattening; worse, SMP's
+  // LSCM divides by the length of the bounding box to pick its two fixed
+  // vertices, picks none (NaN comparisons) and then writes the UV of a null
+  // vertex, out of bounds.
+  if(std::all_of(points.begin(), points.end(), [&](const std::array<double, 3>& p) { return p == points[0]; }))
+    return "degenerate chart (all vertices at one point)";
+
   typedef SMP::Circular_border_arc_length_parameterizer_3<Chart_mesh> Circle;
   typedef Factor_once_sparse_lu Direct_solver;
   switch(method)
@@ -307,10 +360,6 @@ inline std::string parameterize_chart_with(const Indexed_triangle_mesh& m, Chart
         if(!problem.empty())
           return "ARAP: no valid initialization (" + problem + ")";
       }
-      std::vector<std::array<double, 3> > points;
-      points.reserve(c.vertices.size());
-      for(Index v : c.vertices)
-        points.push_back(m.points[v]);
       std::vector<std::array<std::size_t, 3> > triangles;
       triangles.reserve(c.triangles.size());
       for(const auto& t : c.triangles)

@@ -15,6 +15,7 @@
 
 #include <boost/graph/graph_traits.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -46,10 +47,19 @@ struct Indexed_triangle_mesh
   std::vector<std::array<Index, 3> > corners;    // face -> vertices (ccw)
   std::vector<std::array<Index, 3> > neighbors;  // face -> face across edge (corner i, corner i+1)
   std::vector<std::array<double, 3> > points;    // vertex -> coordinates
-  double normalization_scale = 1;                // points = (input - center) * scale
+  // Each connected component has its own frame (see normalize_coordinates):
+  // its lengths times `component_unit` are in the units shared by all
+  // components, which are the input's times `normalization_scale`. Empty
+  // vectors: one frame for the whole mesh.
+  std::vector<Index> face_component;             // face -> component
+  std::vector<double> component_unit;            // component -> power of two <= 1
+  double normalization_scale = 1;
 
   std::size_t number_of_faces() const { return corners.size(); }
   std::size_t number_of_vertices() const { return points.size(); }
+
+  // What lengths of face f are multiplied by to compare them across components.
+  double common_unit(Index f) const { return face_component.empty() ? 1. : component_unit[face_component[f]]; }
 
   const std::array<double, 3>& point(Index f, int i) const { return points[corners[f][i]]; }
 
@@ -173,23 +183,83 @@ void build_indexed_triangle_mesh(const TriangleMesh& tm,
   }
 }
 
-// Checks what the algorithms rely on beyond triangles: finite coordinates,
-// and faces around every vertex forming a single fan (open or closed). The
-// halfedge structure reaches only one fan from a vertex, so a vertex whose
-// face count differs from the fan reached by circulation, or that meets the
-// border twice, is pinched. Vertices without faces are ignored. Only
-// meaningful when the indexed mesh covers all faces of `tm`.
+// Gives each fan of faces around a pinched vertex `v` but the first (in face
+// order) a copy of `v`: same position, same descriptor in `vertex_handles`.
+// `around` lists the corners (face, position) at `v` in increasing face
+// order. Fans are found across the edges at `v`, through `m.neighbors`.
+template <typename VertexHandles>
+void split_pinched_vertex(Index v,
+                          const std::vector<std::pair<Index, int> >& around,
+                          VertexHandles& vertex_handles,
+                          Indexed_triangle_mesh& m)
+{
+  std::vector<bool> reached(around.size(), false);
+  auto position_of = [&around](Index f) {
+    return std::size_t(std::lower_bound(around.begin(), around.end(), std::make_pair(f, 0)) - around.begin());
+  };
+  std::vector<std::size_t> stack;
+  bool first_fan = true;
+  for(std::size_t start = 0; start < around.size(); ++start)
+  {
+    if(reached[start])
+      continue;
+    Index copy = v;
+    if(!first_fan)
+    {
+      copy = static_cast<Index>(m.points.size());
+      const std::array<double, 3> p = m.points[v];
+      m.points.push_back(p);
+      vertex_handles.push_back(vertex_handles[v]);
+    }
+    first_fan = false;
+    reached[start] = true;
+    stack.assign(1, start);
+    while(!stack.empty())
+    {
+      const std::pair<Index, int> corner = around[stack.back()];
+      stack.pop_back();
+      m.corners[corner.first][corner.second] = copy;
+      // The two edges of the face at v: (v, next) and (previous, v).
+      for(int edge : { corner.second, (corner.second + 2) % 3 })
+      {
+        const Index g = m.neighbors[corner.first][edge];
+        if(g == no_index)
+          continue;
+        const std::size_t q = position_of(g);
+        if(q < around.size() && around[q].first == g && !reached[q])
+        {
+          reached[q] = true;
+          stack.push_back(q);
+        }
+      }
+    }
+  }
+}
+
+// Checks what the algorithms rely on beyond triangles: finite coordinates.
+// The faces around a vertex must form one fan (open or closed) for the
+// algorithms; a pinched vertex, whose faces form several, is split in the
+// indexed mesh (one vertex per fan, see split_pinched_vertex): the mesh is
+// then cut there, as an atlas cuts it anyway, and `tm` is left as it is.
+// The halfedge structure reaches only one fan from a vertex, so a vertex
+// whose face count differs from the fan reached by circulation, or that
+// meets the border twice, is pinched. Vertices without faces are ignored.
+// Only meaningful when the indexed mesh covers all faces of `tm`. Returns the
+// number of vertices added.
 template <typename TriangleMesh, typename VertexHandles>
-void check_vertices(const TriangleMesh& tm,
-                    const VertexHandles& vertex_handles,
-                    const Indexed_triangle_mesh& m)
+std::size_t check_and_split_vertices(const TriangleMesh& tm,
+                                     VertexHandles& vertex_handles,
+                                     Indexed_triangle_mesh& m)
 {
   typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
-  std::vector<Index> faces_per_vertex(m.number_of_vertices(), 0);
+  const std::size_t number_of_vertices = m.number_of_vertices();
+  std::vector<Index> faces_per_vertex(number_of_vertices, 0);
   for(const auto& c : m.corners)
     for(Index v : c) ++faces_per_vertex[v];
 
-  for(std::size_t v = 0; v < vertex_handles.size(); ++v)
+  std::vector<Index> pinched_slot(number_of_vertices, no_index);
+  std::vector<Index> pinched;
+  for(std::size_t v = 0; v < number_of_vertices; ++v)
   {
     if(faces_per_vertex[v] == 0)
       continue;
@@ -204,41 +274,132 @@ void check_vertices(const TriangleMesh& tm,
       else ++fan_faces;
     }
     if(border_halfedges > 1 || fan_faces != faces_per_vertex[v])
-      throw Input_error("the mesh is not manifold: the faces around vertex #" + std::to_string(v) +
-                        " form more than one fan; split it first "
-                        "(e.g. Polygon_mesh_processing::duplicate_non_manifold_vertices)");
+    {
+      pinched_slot[v] = static_cast<Index>(pinched.size());
+      pinched.push_back(static_cast<Index>(v));
+    }
   }
+  if(pinched.empty())
+    return 0;
+
+  std::vector<std::vector<std::pair<Index, int> > > around(pinched.size());
+  for(Index f = 0; f < m.number_of_faces(); ++f)
+    for(int i = 0; i < 3; ++i)
+      if(pinched_slot[m.corners[f][i]] != no_index)
+        around[pinched_slot[m.corners[f][i]]].emplace_back(f, i);
+  for(std::size_t i = 0; i < pinched.size(); ++i)
+    split_pinched_vertex(pinched[i], around[i], vertex_handles, m);
+
+  // Faces keep their smallest vertex first (see Indexed_triangle_mesh).
+  for(const auto& corners_at_vertex : around)
+    for(const std::pair<Index, int>& corner : corners_at_vertex)
+    {
+      auto& c = m.corners[corner.first];
+      auto& n = m.neighbors[corner.first];
+      const int first = int(std::min_element(c.begin(), c.end()) - c.begin());
+      std::rotate(c.begin(), c.begin() + first, c.end());
+      std::rotate(n.begin(), n.begin() + first, n.end());
+    }
+  return m.number_of_vertices() - number_of_vertices;
 }
 
-// Centers the used vertices and scales them by a power of two so that the
-// bounding box's largest side lies in [1, 2). Every algorithm of the package
-// is invariant under similarities, and scaling by a power of two is exact,
-// so results do not change, while huge (1e30) and tiny (1e-30) meshes meet
-// the floating-point ranges of unit-size ones (no overflow of squared
-// lengths, no underflow of areas).
-inline void normalize_coordinates(Indexed_triangle_mesh& m)
+// A power of two 2^k such that `side` * 2^k lies in [1, 2), k bounded so
+// that 2^k stays finite for a subnormal side; 1 for a zero or non-finite side.
+inline double unit_scale(double side)
 {
-  std::array<double, 3> lo{{ std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
-                             std::numeric_limits<double>::infinity() }};
-  std::array<double, 3> hi{{ -lo[0], -lo[1], -lo[2] }};
-  for(const auto& c : m.corners)
-    for(Index v : c)
-      for(int k = 0; k < 3; ++k)
-      {
-        lo[k] = (std::min)(lo[k], m.points[v][k]);
-        hi[k] = (std::max)(hi[k], m.points[v][k]);
-      }
-  const double side = (std::max)(hi[0] - lo[0], (std::max)(hi[1] - lo[1], hi[2] - lo[2]));
   if(!(side > 0) || !std::isfinite(side))
-    return;
+    return 1.;
   int exponent = 0;
   std::frexp(side, &exponent);  // side = f * 2^exponent, f in [0.5, 1)
-  const double scale = std::ldexp(1., 1 - exponent);
-  const std::array<double, 3> center{{ (lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2 }};
-  for(auto& p : m.points)
-    for(int k = 0; k < 3; ++k)
-      p[k] = (p[k] - center[k]) * scale;
-  m.normalization_scale = scale;
+  return std::ldexp(1., (std::min)(1 - exponent, std::numeric_limits<double>::max_exponent - 1));
+}
+
+// Centers each connected component of the used vertices and scales it by a
+// power of two so that its bounding box side lies in [1, 2). Every
+// algorithm of the package is invariant under similarities, and scaling by
+// a power of two is exact, so results do not change, while huge (1e30) and
+// tiny (1e-30) meshes meet the floating-point ranges of unit-size ones (no
+// overflow of squared lengths, no underflow of areas). Each component gets
+// its own frame because nothing relates positions across components, while
+// one shared frame would lose a component much smaller than the mesh: a
+// shared center rounds its shape away (a 1e-20 wide copy next to a 1e20
+// wide one collapses to a point), a shared scale underflows its squared
+// lengths and areas (a 1e-150 wide one next to a 1e150 wide one). Where
+// sizes are compared across components (farthest-point seeds, atlas
+// totals), `Indexed_triangle_mesh::common_unit` brings them to the frame of
+// the largest component.
+inline void normalize_coordinates(Indexed_triangle_mesh& m)
+{
+  constexpr double infinity = std::numeric_limits<double>::infinity();
+  const std::size_t nv = m.number_of_vertices();
+  m.face_component.clear();
+  m.component_unit.clear();
+  // Union-find over the corners: vertex -> component root.
+  std::vector<Index> parent(nv);
+  for(std::size_t v = 0; v < nv; ++v)
+    parent[v] = static_cast<Index>(v);
+  auto find = [&parent](Index v) {
+    while(parent[v] != v)
+      v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for(const auto& c : m.corners)
+    for(int i = 1; i < 3; ++i)
+    {
+      const Index a = find(c[0]), b = find(c[i]);
+      if(a != b)
+        parent[(std::max)(a, b)] = (std::min)(a, b);
+    }
+
+  // Components numbered in order of first corner; bounding box of each.
+  std::vector<std::array<double, 6> > box;  // lo, hi
+  std::vector<Index> component_of_root(nv, no_index);
+  for(const auto& c : m.corners)
+    for(Index v : c)
+    {
+      Index& b = component_of_root[find(v)];
+      if(b == no_index)
+      {
+        b = static_cast<Index>(box.size());
+        box.push_back({{ infinity, infinity, infinity, -infinity, -infinity, -infinity }});
+      }
+      for(int k = 0; k < 3; ++k)
+      {
+        box[b][k] = (std::min)(box[b][k], m.points[v][k]);
+        box[b][k + 3] = (std::max)(box[b][k + 3], m.points[v][k]);
+      }
+    }
+  std::vector<double> side(box.size());
+  double largest = 0;
+  for(std::size_t b = 0; b < box.size(); ++b)
+  {
+    side[b] = (std::max)(box[b][3] - box[b][0], (std::max)(box[b][4] - box[b][1], box[b][5] - box[b][2]));
+    largest = (std::max)(largest, side[b]);
+  }
+  if(!(largest > 0) || !std::isfinite(largest))
+    return;
+  m.normalization_scale = unit_scale(largest);
+  std::vector<double> scale(box.size());
+  for(std::size_t b = 0; b < box.size(); ++b)
+    // A component whose vertices all coincide keeps the common frame.
+    scale[b] = side[b] > 0 ? unit_scale(side[b]) : m.normalization_scale;
+  if(box.size() > 1)  // one component: its frame is the common one
+  {
+    m.component_unit.resize(box.size());
+    for(std::size_t b = 0; b < box.size(); ++b)
+      m.component_unit[b] = m.normalization_scale / scale[b];  // exact, or 0 past the double range
+    m.face_component.resize(m.number_of_faces());
+    for(std::size_t f = 0; f < m.number_of_faces(); ++f)
+      m.face_component[f] = component_of_root[find(m.corners[f][0])];
+  }
+  // Vertices without faces are never read: they are left as they are.
+  for(std::size_t v = 0; v < nv; ++v)
+  {
+    const Index b = component_of_root[find(static_cast<Index>(v))];
+    if(b != no_index)
+      for(int k = 0; k < 3; ++k)
+        m.points[v][k] = (m.points[v][k] - (box[b][k] / 2 + box[b][k + 3] / 2)) * scale[b];
+  }
 }
 
 // Reads vertex coordinates as doubles through the vertex point map and the
@@ -331,7 +492,7 @@ void build_indexed_triangle_mesh(const TriangleMesh& tm,
 
   std::vector<vertex_descriptor> no_new_vertex;
   build_indexed_triangle_mesh(tm, faces(tm), coordinates_of, face_index_of, vertex_index_of, no_new_vertex, out);
-  check_vertices(tm, vertex_handles, out);
+  check_and_split_vertices(tm, vertex_handles, out);
   normalize_coordinates(out);
   if(vertex_handles_out != nullptr)
     vertex_handles_out->swap(vertex_handles);

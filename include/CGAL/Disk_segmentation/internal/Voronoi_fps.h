@@ -96,7 +96,7 @@ public:
       farthest_.clear();
       for(Index f : region)
         if(is_seed_[f] != stamp_)
-          farthest_.push_back(std::make_pair(distance_[f], reversed(f)));
+          farthest_.push_back(std::make_pair(farthest_key(f, distance_[f]), reversed(f)));
       std::make_heap(farthest_.begin(), farthest_.end());
 
       while(seeds.size() < target)
@@ -121,6 +121,10 @@ private:
 
   // Max-heap entries order equal distances by increasing face index.
   static Index reversed(Index f) { return no_index - f; }
+
+  // Distances are measured in the frame of each face's component; seeds
+  // compete across components in the common frame (exact: a power of two).
+  double farthest_key(Index f, double d) const { return d * m_.common_unit(f); }
 
   void make_seed(Index s, Index c)
   {
@@ -159,7 +163,7 @@ private:
           queue_.push(Entry(d, g));
           if(track_farthest)
           {
-            farthest_.push_back(std::make_pair(d, reversed(g)));
+            farthest_.push_back(std::make_pair(farthest_key(g, d), reversed(g)));
             std::push_heap(farthest_.begin(), farthest_.end());
           }
         }
@@ -181,7 +185,7 @@ private:
       farthest_.clear();
       for(Index f : region)
         if(is_seed_[f] != stamp_)
-          farthest_.push_back(std::make_pair(distance_[f], reversed(f)));
+          farthest_.push_back(std::make_pair(farthest_key(f, distance_[f]), reversed(f)));
       std::make_heap(farthest_.begin(), farthest_.end());
     }
     while(!farthest_.empty())
@@ -190,7 +194,7 @@ private:
       const std::pair<double, Index> top = farthest_.back();
       farthest_.pop_back();
       const Index f = reversed(top.second);
-      if(is_seed_[f] != stamp_ && top.first == distance_[f])
+      if(is_seed_[f] != stamp_ && top.first == farthest_key(f, distance_[f]))
         return f;
     }
     return no_index;
