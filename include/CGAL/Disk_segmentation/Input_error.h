@@ -13,7 +13,7 @@ namespace Disk_segmentation {
 /// \ingroup PkgDiskSegmentationRef
 /// Thrown by every function of the package when its input mesh or one of its
 /// parameters cannot be processed (empty mesh, non-triangle face,
-/// non-manifold vertex, non-finite coordinate, out-of-range parameter, ...).
+/// non-finite coordinate, out-of-range parameter, ...).
 /// `what()` names the problem and, where there is one, the first offending
 /// element.
 ///

@@ -161,9 +161,10 @@ void write_seeds(const NamedParameters& np, const std::vector<Index>& seeds, con
 ///
 /// @return the number of cells
 ///
-/// @throws Input_error if `tm` has no face, a face that is not a triangle, a
-///         non-manifold vertex or a non-finite coordinate, or if a parameter
-///         is out of range. `face_patch_map` is not written then.
+/// @throws Input_error if `tm` has no face, a face that is not a triangle or
+///         a non-finite coordinate, or if a parameter is out of range.
+///         `face_patch_map` is not written then. A pinched vertex is cut
+///         (each of its fans gets its own vertex in the package's copy).
 ///
 /// The result depends only on the mesh (faces and vertices in the order of
 /// `faces(tm)` and `vertices(tm)`) and the parameters: it is the same for
