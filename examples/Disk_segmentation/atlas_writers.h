@@ -243,6 +243,7 @@ public:
     const int i1 = std::min(size_ - 1, int(std::floor(max_x - 0.5)));
     const int j0 = std::max(0, int(std::ceil(min_y - 0.5)));
     const int j1 = std::min(size_ - 1, int(std::floor(max_y - 0.5)));
+    // At most size_^2 pixels: the ranges are clamped to the image.
     for(int j = j0; j <= j1; ++j)
       for(int i = i0; i <= i1; ++i)
       {
@@ -269,6 +270,7 @@ public:
       return;
     const double dx = b[0] - a[0], dy = b[1] - a[1];
     const double length = std::max(std::fabs(dx), std::fabs(dy));
+    // Clipped to [0, size]^2, so at most about size + 1 steps.
     const long steps = std::max(1L, long(std::ceil(length)));
     for(long k = 0; k <= steps; ++k)
     {

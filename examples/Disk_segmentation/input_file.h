@@ -58,6 +58,8 @@ inline std::size_t read_up_to(int fd, std::string& bytes, std::size_t wanted, co
 {
   const std::size_t start = bytes.size();
   bytes.resize(start + wanted);
+  // Each pass reads a byte or more, or ends (end of input, error); only a
+  // signal (EINTR) repeats one without progress.
   std::size_t done = 0;
   while(done < wanted)
   {
@@ -117,6 +119,8 @@ inline std::string read_input_file(const std::string& path, bool allow_special_i
     internal::read_up_to(fd.get(), bytes, std::size_t(opened.st_size), path);
     return bytes;
   }
+  // Each pass that goes on reads a whole chunk, and the input is refused
+  // past max_input_bytes: at most max_input_bytes / chunk + 2 passes.
   const std::size_t chunk = std::size_t(1) << 20;
   for(;;)
   {

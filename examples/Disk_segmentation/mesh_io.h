@@ -142,6 +142,8 @@ std::string triangle_soup_problem(std::vector<Point>& points,
   std::vector<std::uint32_t> fan(3 * polygons.size());
   for(std::size_t c = 0; c < fan.size(); ++c)
     fan[c] = std::uint32_t(c);
+  // Ends: join links a root to a root (itself when they are equal), so fan
+  // is a forest; at most 3 F steps.
   auto find = [&fan](std::uint32_t c) {
     while(fan[c] != c)
       c = fan[c] = fan[fan[c]];
@@ -155,6 +157,7 @@ std::string triangle_soup_problem(std::vector<Point>& points,
     return 3 * face;
   };
 
+  // Each pass moves i past uses[i] at least.
   for(std::size_t i = 0; i < uses.size();)
   {
     std::size_t j = i;

@@ -142,6 +142,7 @@ void read_OBJ_soup(std::string_view text, const std::string& name, std::vector<P
   // Positive indices may refer to vertices defined later: checked at the end.
   long long largest_index = 0;
   std::size_t largest_index_line = 0;
+  // Each pass takes a line, the inner loop one more per continued line.
   while(in.next_line())
   {
     const std::size_t line_number = in.line_number();
@@ -354,6 +355,7 @@ void read_ASCII_STL(std::string_view text, const std::string& name, std::vector<
     return value;
   };
   std::size_t solids = 0;
+  // Every pass of both loops takes at least one token, or throws.
   while(in.next_token(token))
   {
     if(token != "solid")
@@ -460,6 +462,7 @@ void read_TS_soup(std::string_view text, const std::string& name, std::vector<Po
     if(!vertex_of_id.emplace(id, vertex).second)
       in.fail("vertex id " + std::to_string(id) + " is defined twice");
   };
+  // Each pass takes a line.
   while(in.next_tokens(tokens, '\0'))
   {
     const std::string_view keyword = tokens[0];

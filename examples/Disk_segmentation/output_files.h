@@ -65,6 +65,8 @@ private:
   {
     const char* data = pbase();
     std::size_t left = std::size_t(pptr() - pbase());
+    // Each pass writes a byte or more or sets error_; only a signal (EINTR)
+    // repeats one without progress.
     while(left > 0 && error_ == 0)
     {
       const ssize_t written = ::write(fd_, data, left);
@@ -361,6 +363,7 @@ private:
     const std::string folder = internal::directory_of(o.target);
     const std::string stem = folder + "/." + internal::file_name_of(o.target) + ".disk_uv-" + std::to_string(::getpid());
     int fd = -1;
+    // At most 100 names; an error other than EEXIST ends it at once.
     for(int attempt = 0; attempt < 100 && fd < 0; ++attempt)
     {
       o.temporary = stem + "-" + std::to_string(attempt);

@@ -244,6 +244,7 @@ void read_PLY_soup(std::string_view bytes, const std::string& name, std::vector<
 
   std::vector<Ply_element> elements;
   bool header_ended = false;
+  // Each pass takes a line of the header's first MiB.
   while(!header_ended && header.next_line())
   {
     if(header.next_line_offset() == header_text.size() && header_text.size() < bytes.size() &&
@@ -337,6 +338,8 @@ void read_PLY_soup(std::string_view bytes, const std::string& name, std::vector<
     if(is_face)
       polygons.reserve(polygons.size() + element.count);
 
+    // element.count and the list lengths were checked against the bytes
+    // left, and every value read takes at least one byte.
     double xyz[3] = { 0, 0, 0 };
     for(std::size_t item = 0; item < element.count; ++item)
     {

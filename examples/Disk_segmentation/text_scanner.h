@@ -73,6 +73,7 @@ inline void split_tokens(std::string_view line, std::vector<std::string_view>& t
 {
   tokens.clear();
   const std::size_t end = comment == '\0' ? line.size() : (std::min)(line.find(comment), line.size());
+  // Each pass moves i past at least one byte (a blank or a token).
   std::size_t i = 0;
   while(i < end)
   {
@@ -168,6 +169,7 @@ public:
   // at the end of the text.
   bool next_tokens(std::vector<std::string_view>& tokens, char comment = '#')
   {
+    // Each pass takes a line (next_line moves past at least one byte).
     while(next_line())
     {
       internal::split_tokens(line_, tokens, comment);
@@ -180,6 +182,7 @@ public:
   // The next token, across line breaks; false at the end of the text.
   bool next_token(std::string_view& token)
   {
+    // Each pass returns a token or takes a line: at most the lines left + 1.
     for(;;)
     {
       std::size_t i = 0;

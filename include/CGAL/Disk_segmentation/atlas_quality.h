@@ -172,6 +172,7 @@ inline std::size_t count_texel_overlaps(const std::vector<std::array<std::array<
     const double orientation = (t[1][0] - t[0][0]) * (t[2][1] - t[0][1]) - (t[1][1] - t[0][1]) * (t[2][0] - t[0][0]);
     if(orientation == 0)
       continue;
+    // At most resolution^2 texels: both ranges were clamped to [0, resolution).
     for(long j = j0; j <= j1; ++j)
       for(long i = i0; i <= i1; ++i)
       {
@@ -253,6 +254,7 @@ Atlas_quality atlas_quality(const TriangleMesh& tm, UVMap uv_map, FacePatchMap f
 
   // UVs in the indexed mesh's corner order.
   std::vector<std::array<std::array<double, 2>, 3> > uv(F);
+  // Three halfedges: build_indexed_triangle_mesh checked the triangles.
   for(Index f = 0; f < F; ++f)
     for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(face_handles[f], tm), tm))
       for(int j = 0; j < 3; ++j)

@@ -210,6 +210,7 @@ void collect_charts(const TriangleMesh& tm, const FacePatchMap& face_patch_map, 
     std::array<double, 3> lo, hi;
     lo.fill(std::numeric_limits<double>::infinity());
     hi.fill(-std::numeric_limits<double>::infinity());
+    // Ends: a face's cycle in a valid halfedge graph returns to its start.
     for(face_descriptor f : charts.faces)
       for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm), tm))
       {
@@ -365,6 +366,7 @@ template <typename TriangleMesh>
 std::vector<Chart_similarity> grid_layout(const Chart_set<TriangleMesh>& charts, const Packing_settings& s)
 {
   const std::size_t n = charts.size();
+  // A step or two each: the double square root is within one of the integer one.
   std::size_t columns = static_cast<std::size_t>(std::sqrt(static_cast<double>(n)));
   while(columns * columns < n) ++columns;
   while(columns > 1 && (columns - 1) * (columns - 1) >= n) --columns;

@@ -184,11 +184,17 @@ struct Splitter
   Region_topology topology;
 };
 
-// Splits a chart into the Voronoi cells of two seeds, refined to disks, and
-// parameterizes each piece on its own; a piece too large to parameterize, or
-// for which `needs_split` holds once parameterized, is split again. Pieces
-// shrink at every split and a single triangle is always kept, so the
-// recursion ends.
+// Splits a chart into the Voronoi cells of two seeds (one per component if
+// it has more), refined to disks, and parameterizes each piece on its own; a
+// piece too large to parameterize, or for which `needs_split` holds once
+// parameterized, is split again.
+//
+// Bound: `faces` (at least 2) gets at least two seeds, each keeping its own
+// face, so every piece is smaller than `faces`, and a single triangle is
+// always kept: at most |faces| - 1 splits below a patch, nested as deep
+// (far fewer in practice: cells halve the chart). A chart whose points all
+// coincide, where zero arcs would let a split take only one face off, is
+// cut into single faces at once.
 template <typename NeedsSplit>
 void split_and_parameterize(const Indexed_triangle_mesh& m, Splitter& splitter, const std::vector<Index>& faces,
                             Parameterization_method requested, bool use_fallback, std::vector<Chart>& pieces,
@@ -196,8 +202,22 @@ void split_and_parameterize(const Indexed_triangle_mesh& m, Splitter& splitter, 
 {
   if(faces.size() < 2)
     return;
-  splitter.fps.run(faces, 2);
-  std::vector<std::vector<Index> > cells(2);
+  // Never valid as a whole, and Voronoi cells of zero arcs split it slowly:
+  // single faces at once.
+  if(m.at_one_point(faces))
+  {
+    for(Index f : faces)
+    {
+      Chart c = make_chart(m, std::vector<Index>(1, f));
+      outcomes.push_back(parameterize_chart(m, c, requested, use_fallback));
+      pieces.push_back(std::move(c));
+    }
+    return;
+  }
+  // More than two cells when `faces` has more than two components (a patch
+  // that is not a disk, with require_disk_patches(false)).
+  const std::size_t seeds = splitter.fps.run(faces, 2).size();
+  std::vector<std::vector<Index> > cells(seeds);
   for(Index f : faces)
     cells[splitter.fps.cell(f)].push_back(f);
   const std::vector<std::vector<Index> > parts =
@@ -502,6 +522,7 @@ Parameterization_report parameterize_patches(const TriangleMesh& tm,
       if(p >= number_of_patches || c.faces.size() != patch_faces[p].size())
         put(face_patch_map, face_handles[f],
             static_cast<typename boost::property_traits<FacePatchMap>::value_type>(p));
+      // Three halfedges: build_indexed_triangle_mesh checked the triangles.
       for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(face_handles[f], tm), tm))
         for(int j = 0; j < 3; ++j)
           if(vertex_handles[m.corners[f][j]] == target(h, tm))

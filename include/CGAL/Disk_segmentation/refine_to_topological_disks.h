@@ -38,9 +38,10 @@ inline std::size_t checked_number_of_subsamples(std::size_t k)
 // Termination: a region that is a disk is final. A region of at most k faces
 // is split into single faces, which are disks. A region R of more than k
 // faces is re-sampled with at least k >= 2 seeds, all distinct faces of R;
-// each seed keeps at least itself, so every sub-region has fewer faces than
-// R. Sizes strictly decrease along every chain of re-sampling, so the
-// worklist empties after at most |R| - 1 splits below each region.
+// each seed keeps at least itself (its distance 0 is never strictly
+// lowered), so every sub-region has fewer faces than R. Sizes strictly
+// decrease along every chain of re-sampling, so the worklist empties after
+// at most |R| - 1 splits below each region.
 inline std::vector<std::vector<Index> > refine_region_list(Region_topology& topology,
                                                            Voronoi_fps& fps,
                                                            std::vector<std::vector<Index> > regions,
@@ -58,11 +59,12 @@ inline std::vector<std::vector<Index> > refine_region_list(Region_topology& topo
       worklist.push_back(std::move(region));
   }
 
+  // Ends: see Termination above.
   while(!worklist.empty())
   {
     std::vector<Index> region = std::move(worklist.back());
     worklist.pop_back();
-    if(region.size() <= k)
+    if(region.size() <= k || topology.mesh().at_one_point(region))
     {
       for(Index f : region)
         refined.push_back(std::vector<Index>(1, f));

@@ -111,12 +111,17 @@ public:
     segments_.push_back(Segment{ 0., width, 0., none, none, 0, true });
     push(0);
 
+    // Bound: a pass places a rectangle (n times, at most one new segment
+    // each) or raises a gap to a neighbor's height and merges the two (also
+    // with NaN heights), which kills a segment: at most n raises, 2 n passes.
     double top = 0.;
     for(std::size_t remaining = n; remaining > 0;)
     {
       const std::size_t s = pop_lowest();
       const double gap = segments_[s].end - segments_[s].begin;
       // Most gaps that nothing fits are narrower than every rectangle left.
+      // The positions only move past removed rectangles, and `remaining` > 0
+      // are alive: below n, and n steps per run in all.
       while(alive_upright_[narrowest_upright] != narrowest_upright) ++narrowest_upright;
       while(alive_turned_[narrowest_turned] != narrowest_turned) ++narrowest_turned;
       std::size_t ku = none, kt = none;
@@ -181,7 +186,8 @@ private:
   }
 
   // Largest position <= k still alive, or `none`. A live position links to
-  // itself, a removed one to a smaller position (or `none`).
+  // itself, a removed one to a smaller position (or `none`), so both loops
+  // end within k + 1 steps.
   static std::size_t find(std::vector<std::size_t>& link, std::size_t k)
   {
     std::size_t root = k;
@@ -204,6 +210,9 @@ private:
     heap_.push(Heap_entry{ g.y, g.begin, s, g.version });
   }
 
+  // Lazy heap: every live segment has an entry of its current version (each
+  // change is followed by push), so this ends within the pushes: at most
+  // 1 + 2 per placement + 1 per raise.
   std::size_t pop_lowest()
   {
     for(;;)
@@ -368,6 +377,7 @@ inline Square_packing pack_in_square(const std::vector<double>& w, const std::ve
   std::vector<Packed_rectangle> trial;
   const double infinity = std::numeric_limits<double>::infinity();
   double lo = 0., hi = infinity, scale = upper;
+  // At most 60 packing runs, whatever the scales (a NaN one ends the search).
   for(int run = 0; run < 60 && scale > 0.; ++run)
   {
     // Runs may go up to twice the side to measure how far off they are.

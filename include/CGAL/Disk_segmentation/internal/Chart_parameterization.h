@@ -286,6 +286,8 @@ inline std::string parameterize_chart_with(const Indexed_triangle_mesh& m, Chart
   if(border == Chart_mesh::null_halfedge())
     return "chart has no border";
   border_loop.clear();
+  // Ends: add_face keeps the mesh valid, so the border cycle returns to
+  // `border` (at most 3 F halfedges).
   for(Chart_mesh::Halfedge_index h : CGAL::halfedges_around_face(border, mesh))
     border_loop.push_back(static_cast<Index>(std::size_t(mesh.target(h))));
 
@@ -409,6 +411,7 @@ inline Chart_outcome parameterize_chart(const Indexed_triangle_mesh& m, Chart& c
       if(fallback != requested)
         chain.push_back(fallback);
 
+  // The fallback chain: at most three methods (requested, mean value, Tutte).
   for(std::size_t i = 0; i < chain.size(); ++i)
   {
     std::string problem = parameterize_chart_with(m, c, chain[i], border_loop);

@@ -88,6 +88,9 @@ public:
           push_candidate(r, nl.first, nl.second);
 
     std::size_t merges = 0;
+    // Lazy heap, bound by pushes: each pass pops one candidate; a merge kills
+    // a region for good, so at most R - 1 merges, each pushing at most R
+    // candidates, on top of one per adjacent pair at the start.
     while(!heap_.empty())
     {
       std::pop_heap(heap_.begin(), heap_.end());
@@ -191,6 +194,8 @@ private:
                               shared_vertices_.begin());
   }
 
+  // Ends: links join two distinct roots only, so parent_ is a forest; at
+  // most |shared_vertices_| steps.
   Index find_root(Index i)
   {
     while(parent_[i] != i) { parent_[i] = parent_[parent_[i]]; i = parent_[i]; }

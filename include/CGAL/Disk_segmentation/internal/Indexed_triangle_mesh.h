@@ -63,6 +63,19 @@ struct Indexed_triangle_mesh
 
   const std::array<double, 3>& point(Index f, int i) const { return points[corners[f][i]]; }
 
+  // Whether every corner of `faces` (not empty) is at one point: there all
+  // arcs have length zero, distances tie everywhere, and Voronoi cells could
+  // only peel a few faces off per split (quadratic on 10^5 such faces).
+  bool at_one_point(const std::vector<Index>& faces) const
+  {
+    const std::array<double, 3>& p = point(faces.front(), 0);
+    for(Index f : faces)
+      for(int i = 0; i < 3; ++i)
+        if(point(f, i) != p)
+          return false;
+    return true;
+  }
+
   static double distance(const std::array<double, 3>& a, const std::array<double, 3>& b)
   {
     const double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
@@ -150,6 +163,7 @@ void build_indexed_triangle_mesh(const TriangleMesh& tm,
     std::array<Index, 3> vs;
     std::array<Index, 3> nbs;
     int n = 0;
+    // At most four steps: the fourth halfedge throws.
     for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm), tm))
     {
       if(n == 3)
@@ -214,6 +228,7 @@ void split_pinched_vertex(Index v,
     first_fan = false;
     reached[start] = true;
     stack.assign(1, start);
+    // Each corner is pushed once (`reached`): at most around.size() passes in all.
     while(!stack.empty())
     {
       const std::pair<Index, int> corner = around[stack.back()];
@@ -268,6 +283,8 @@ std::size_t check_and_split_vertices(const TriangleMesh& tm,
       throw Input_error("the mesh has a non-finite (NaN or infinite) coordinate at vertex #" +
                         std::to_string(v));
     std::size_t fan_faces = 0, border_halfedges = 0;
+    // Ends: in a valid halfedge graph the circulation returns to its start
+    // after the halfedges of one fan at v.
     for(halfedge_descriptor h : CGAL::halfedges_around_target(halfedge(vertex_handles[v], tm), tm))
     {
       if(is_border(h, tm)) ++border_halfedges;
@@ -338,6 +355,8 @@ inline void normalize_coordinates(Indexed_triangle_mesh& m)
   std::vector<Index> parent(nv);
   for(std::size_t v = 0; v < nv; ++v)
     parent[v] = static_cast<Index>(v);
+  // Ends: a non-root's parent is a smaller index (unions link the larger root
+  // to the smaller), so v strictly decreases.
   auto find = [&parent](Index v) {
     while(parent[v] != v)
       v = parent[v] = parent[parent[v]];

@@ -149,7 +149,9 @@ int local_global_arap(const std::vector<std::array<double, 3> >& points,
       uv[i] = {{ u[unknown(i)], v[unknown(i)] }};
     // A rejected iterate is pulled back toward the last valid one: a
     // shorter step along the same direction often stays valid and still
-    // lowers the energy.
+    // lowers the energy. At most 8 shorter steps (1/2 down to 1/256) per
+    // iteration, whatever is_acceptable says (NaN UVs included), then the
+    // last valid iterate stays.
     double step = 1.;
     while(!is_acceptable(uv))
     {

@@ -50,6 +50,8 @@ public:
       interior_halfedges_at_vertex_(m.number_of_vertices(), 0)
   {}
 
+  const Indexed_triangle_mesh& mesh() const { return m_; }
+
   // `region` lists distinct face indices.
   Region_counts count(const std::vector<Index>& region)
   {
@@ -137,6 +139,7 @@ private:
       ++components;
       visit_mark_[seed] = stamp;
       stack_.push_back(seed);
+      // Each face is pushed once (visit_mark_): at most |region| passes in all.
       while(!stack_.empty())
       {
         const Index f = stack_.back();

@@ -99,6 +99,7 @@ public:
           farthest_.push_back(std::make_pair(farthest_key(f, distance_[f]), reversed(f)));
       std::make_heap(farthest_.begin(), farthest_.end());
 
+      // One seed per pass, so target - seeds.size() <= |region| passes.
       while(seeds.size() < target)
       {
         const Index s = pop_farthest(region);
@@ -142,6 +143,9 @@ private:
   {
     for(Index s : sources)
       queue_.push(Entry(0., s));
+    // Bound: a distance is written only when it strictly drops, and arcs are
+    // >= 0 (a NaN arc relaxes nothing), so a settled face never drops again:
+    // each face is settled once and pushes at most 3 entries.
     while(!queue_.empty())
     {
       const Entry top = queue_.top();
@@ -188,6 +192,7 @@ private:
           farthest_.push_back(std::make_pair(farthest_key(f, distance_[f]), reversed(f)));
       std::make_heap(farthest_.begin(), farthest_.end());
     }
+    // Each pass pops an entry: at most the heap's size.
     while(!farthest_.empty())
     {
       std::pop_heap(farthest_.begin(), farthest_.end());

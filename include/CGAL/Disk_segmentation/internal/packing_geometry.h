@@ -134,6 +134,7 @@ inline void convex_hull(std::vector<Packing_point>& points, std::vector<Packing_
     return;
   }
   hull.resize(2 * n);
+  // The inner loops pop only what was pushed: at most 2 n pops in all.
   std::size_t k = 0;
   for(std::size_t i = 0; i < n; ++i)
   {
