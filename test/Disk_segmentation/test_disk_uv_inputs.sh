@@ -18,9 +18,20 @@ passed=0
 
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 pass() { passed=$((passed + 1)); }
-# A run's virtual memory is limited to memory_limit_kb when that is set.
+# A run's memory is limited to memory_limit_kb when that is set: by
+# `ulimit -v`, or, for a tool built with AddressSanitizer (which reserves
+# terabytes of virtual memory at start), by ASan's own limits on one
+# allocation and on the resident size (a run over them aborts, not exit 1).
+if grep -qa -e __asan_init -e AddressSanitizer "$tool" 2> /dev/null; then sanitized=1; else sanitized=0; fi
 run() {
-  ( [ -n "${memory_limit_kb:-}" ] && ulimit -v "$memory_limit_kb"
+  ( if [ -n "${memory_limit_kb:-}" ]; then
+      if [ "$sanitized" -eq 1 ]; then
+        limit_mb=$((memory_limit_kb / 1024))
+        export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}max_allocation_size_mb=$limit_mb:hard_rss_limit_mb=$limit_mb"
+      else
+        ulimit -v "$memory_limit_kb"
+      fi
+    fi
     exec timeout 20 "$tool" "$@" --patch-ids ids.txt ) > out.txt 2> err.txt
 }
 # expect_error MESSAGE ARGS...: exit status 1 and one line on stderr matching MESSAGE.
