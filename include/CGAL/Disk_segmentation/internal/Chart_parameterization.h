@@ -327,7 +327,7 @@ inline std::string parameterize_chart_with(const Indexed_triangle_mesh& m, Chart
   // LSCM divides by the length of the bounding box to pick its two fixed
   // vertices, picks none (NaN comparisons) and then writes the UV of a null
   // vertex, out of bounds.
-  if(std::all_of(points.begin(), points.end(), [&](const std::array<double, 3>& p) { return p == points[0]; }))
+  if(m.at_one_point(c.faces))
     return "degenerate chart (all vertices at one point)";
 
   typedef SMP::Circular_border_arc_length_parameterizer_3<Chart_mesh> Circle;
