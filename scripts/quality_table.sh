@@ -29,4 +29,5 @@ if ! bash "$root/scripts/build.sh" -DDISK_SEGMENTATION_BUILD_BENCHMARKS=ON; then
 fi
 
 cd "$root"
-"$build/bin/quality_table" "$meshes" --out "$out" --jobs "$(nproc)" --time-limit 60 "$@"
+"$build/bin/quality_table" "$meshes" --out "$out" --jobs "$(nproc)" --time-limit 60 \
+  --peers benchmark/Disk_segmentation/peers.csv "$@"

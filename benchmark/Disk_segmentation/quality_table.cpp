@@ -266,12 +266,17 @@ void run_case(const Case_settings& s, const Reporter& report)
   // Segmentation.
   Clock::time_point start = Clock::now();
   std::size_t count = 0;
+  DS::Merge_tree tree;
   try
   {
     if(s.segmentation == "components")
       count = PMP::connected_components(mesh, patches);
     else if(s.segmentation == "voronoi")
       count = DS::voronoi_fps_segmentation(mesh, patches, DS::parameters::number_of_seeds(s.seeds));
+    else if(s.segmentation == "ours")
+      // What uv_atlas() does: smoothed borders, merge tree for the bound.
+      count = DS::segment_into_disks(
+        mesh, patches, DS::parameters::number_of_seeds(s.seeds).merge_tree(&tree).smooth_borders(true));
     else
       count = DS::segment_into_disks(mesh, patches, DS::parameters::number_of_seeds(s.seeds));
   }
@@ -293,12 +298,15 @@ void run_case(const Case_settings& s, const Reporter& report)
   try
   {
     const auto np = DS::parameters::parameterization_method(s.method).number_of_threads(s.threads);
+    const double inf = std::numeric_limits<double>::infinity();
     if(s.segmentation == "ours")
-      p = parameterize(mesh, patches, uv, np);
+      p = parameterize(mesh, patches, uv, np.merge_tree(&tree));
     else if(s.segmentation == "ours-nosplit")
-      p = parameterize(mesh, patches, uv, np.max_area_distortion(std::numeric_limits<double>::infinity()));
+      p = parameterize(mesh, patches, uv,
+                       np.distortion_bound(DS::Distortion_bound::unbounded())
+                         .smooth_borders(false));
     else if(s.segmentation == "ours-nofallback")
-      p = parameterize(mesh, patches, uv, np.use_fallback(false));
+      p = parameterize(mesh, patches, uv, np.use_fallback(false).smooth_borders(false));
     else
       p = parameterize(mesh, patches, uv, np.use_fallback(false).require_disk_patches(false));
   }
@@ -407,6 +415,10 @@ void run_case(const Case_settings& s, const Reporter& report)
   report("log_angle_p95", q.angle_distortion.percentile_95);
   report("log_angle_max", q.angle_distortion.max);
   report("log_atlas_area_mean", q.atlas_area_distortion.mean);
+  report("conformal_ratio_p95", q.conformal_ratio_p95);
+  report("max_conformal_ratio", q.max_conformal_ratio);
+  report("min_area_scale", q.min_area_scale);
+  report("max_area_scale", q.max_area_scale);
   report("cut_length", q.cut_length);
   report("packing_efficiency", q.packing_efficiency);
   if(packed)
@@ -543,6 +555,7 @@ struct Options
   unsigned int threads = 1;
   unsigned int texture_resolution = 1024;
   std::string machine_note;
+  std::string peers_file;
   bool quiet = false;
 };
 
@@ -780,6 +793,10 @@ const std::vector<std::pair<std::string, std::string> >& csv_columns()
     { "log_angle_p95", "log_angle_p95" },
     { "log_angle_max", "log_angle_max" },
     { "log_atlas_area_mean", "log_atlas_area_mean" },
+    { "conformal_ratio_p95", "conformal_ratio_p95" },
+    { "max_conformal_ratio", "max_conformal_ratio" },
+    { "min_area_scale", "min_area_scale" },
+    { "max_area_scale", "max_area_scale" },
     { "cut_length", "cut_length" },
     { "packing_efficiency", "packing_efficiency" },
     { "grid_benchmark_atlas_area_distortion", "grid_benchmark_atlas_area_distortion" },
@@ -898,6 +915,15 @@ struct Cell
       sum += v;
     return sum / double(it->second.size());
   }
+  // The largest (or, with `smallest`, the smallest) value over the meshes.
+  double extreme(const std::string& key, bool smallest = false) const
+  {
+    const auto it = values.find(key);
+    if(successes == 0 || it == values.end() || it->second.empty())
+      return std::nan("");
+    return smallest ? *std::min_element(it->second.begin(), it->second.end())
+                    : *std::max_element(it->second.begin(), it->second.end());
+  }
   double median(const std::string& key) const
   {
     const auto it = values.find(key);
@@ -917,7 +943,8 @@ Cell cell_of(const std::vector<Case>& cases, const std::vector<Result>& results,
     "benchmark_area_distortion", "benchmark_angle_distortion", "benchmark_atlas_area_distortion",
     "flipped_percent", "degenerate_percent", "cut_length", "log_area_mean", "log_angle_mean", "log_atlas_area_mean", "charts",
     "seconds_segmentation", "seconds_parameterization", "seconds_packing", "fallbacks", "packing_efficiency",
-    "grid_benchmark_atlas_area_distortion", "grid_log_atlas_area_mean"
+    "grid_benchmark_atlas_area_distortion", "grid_log_atlas_area_mean", "conformal_ratio_p95",
+    "max_conformal_ratio", "min_area_scale", "max_area_scale"
   };
   Cell cell;
   for(std::size_t i = 0; i < cases.size(); ++i)
@@ -959,6 +986,70 @@ std::string reason_group(const Result& r)
   if(hash != std::string::npos)
     reason.erase(hash);
   return kind + ": " + reason;
+}
+
+// The peers' numbers (a CSV with a header line: mesh,tool,faces,unwrap_s,
+// charts,log_angle,log_area,p95,cut,uv_bbox,mirrored,valid) beside ours for
+// the meshes of this run that it names.
+void write_peers_block(std::ostream& out, const Options& o, const std::vector<fs::path>& files,
+                       const std::vector<Case>& cases, const std::vector<Result>& results)
+{
+  if(o.peers_file.empty())
+    return;
+  std::ifstream in(o.peers_file);
+  if(!in)
+    throw std::runtime_error("cannot read the peers file " + o.peers_file);
+  std::map<std::string, std::vector<std::vector<std::string> > > peers;  // mesh -> rows
+  std::string line;
+  std::getline(in, line);  // header
+  while(std::getline(in, line))
+  {
+    std::vector<std::string> fields;
+    std::stringstream ss(line);
+    std::string field;
+    while(std::getline(ss, field, ','))
+      fields.push_back(field);
+    if(fields.size() == 12)
+      peers[fields[0]].push_back(fields);
+  }
+  out << "## Peers\n\n"
+         "The numbers of xatlas and Blender's Smart UV Project in `" << fs::path(o.peers_file).filename().string()
+      << "` (copied from the project's PEERS.md, measured there with one independent checker on the same "
+         "meshes of CGAL's data set), beside this run's for the meshes both have. Ours: UV area / unit square "
+         "after packing; peers: UV area / bounding box. Peers' seconds were measured on another run of the "
+         "same machine; ours are this run's (segmentation + parameterization + packing). \"valid\" is the "
+         "peers' checker's verdict (xatlas mirrors charts; Blender overlaps texels on some meshes); ours are "
+         "checked by the test suite.\n\n"
+         "| mesh | faces | tool | seconds | charts | log angle | log area | p95 s1/s2 | cut length | UV area | "
+         "valid |\n|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---|\n";
+  bool any = false;
+  for(std::size_t m = 0; m < files.size(); ++m)
+  {
+    const auto it = peers.find(files[m].stem().string());
+    if(it == peers.end())
+      continue;
+    any = true;
+    for(std::size_t i = 0; i < cases.size(); ++i)
+    {
+      const Result& r = results[i];
+      if(cases[i].mesh != m || r.failed() || cases[i].method != DS::default_parameterization_method ||
+         (cases[i].segmentation != "ours" && cases[i].segmentation != "ours-nosplit"))
+        continue;
+      const double seconds =
+        r.number("seconds_segmentation") + r.number("seconds_parameterization") + r.number("seconds_packing");
+      out << "| " << it->first << " | " << r.get("faces") << " | disk_uv, " << segmentation_title(cases[i].segmentation)
+          << " | " << fixed(seconds, 3) << " | " << r.get("charts") << " | " << fixed(r.number("log_angle_mean"), 3)
+          << " | " << fixed(r.number("log_area_mean"), 3) << " | " << fixed(r.number("conformal_ratio_p95"), 2)
+          << " | " << fixed(r.number("cut_length"), 1) << " | " << fixed(r.number("packing_efficiency"), 3)
+          << " | yes |\n";
+    }
+    for(const std::vector<std::string>& p : it->second)
+      out << "| " << p[0] << " | " << p[2] << " | " << p[1] << " | " << p[3] << " | " << p[4] << " | " << p[5]
+          << " | " << p[6] << " | " << p[7] << " | " << p[8] << " | " << p[9] << " | " << p[11] << " |\n";
+  }
+  if(!any)
+    out << "No mesh of this run is in the peers file.\n";
+  out << "\n";
 }
 
 void write_markdown(const fs::path& path, const Options& o, const std::vector<fs::path>& files,
@@ -1009,10 +1100,16 @@ void write_markdown(const fs::path& path, const Options& o, const std::vector<fs
       << o.seeds << " farthest-point seeds (`voronoi_fps_segmentation`, no refinement or merging); both "
          "parameterized with `use_fallback(false)` and `require_disk_patches(false)`, so non-disk charts are "
          "attempted as in the paper. Ours = `segment_into_disks` and `parameterize_patches` with their defaults: "
-         "an invalid chart is redone with mean value coordinates, then Tutte, then split, and a chart whose "
-         "mean |log s1 s2| exceeds `max_area_distortion` ("
-      << format_double(DS::default_max_area_distortion) << ") is split (this splitting is not in the paper); "
-         "Ours, no split = the same with `max_area_distortion(infinity)`: the paper's charts, invalid ones "
+         "an invalid chart is redone with mean value coordinates, then Tutte, then split, and a chart that "
+         "exceeds the default `Distortion_bound` (mean |log s1/s2| "
+      << format_double(DS::Distortion_bound().max_angle_distortion) << ", mean |log s1 s2| "
+      << format_double(DS::Distortion_bound().max_area_distortion) << ", s1/s2 "
+      << format_double(DS::Distortion_bound().max_stretch) << ", s1 s2 within 1/"
+      << format_double(DS::Distortion_bound().max_area_scale) << " to "
+      << format_double(DS::Distortion_bound().max_area_scale)
+      << ") is replaced by its two children in the merge tree, down to the refined regions, then split by "
+         "Voronoi cells (this is not in the paper); "
+         "Ours, no split = the same without bound (`Distortion_bound::unbounded()`): the paper's charts, invalid ones "
          "repaired; Ours, no fallback = the same segmentation with `use_fallback(false)` (no repair, no split)."
          "\n\n";
 
@@ -1091,6 +1188,25 @@ void write_markdown(const fs::path& path, const Options& o, const std::vector<fs
     out << "\n";
   }
   out << "\n";
+
+  out << "## Tails: the worst triangle of the worst mesh\n\n"
+         "Per triangle, chart-normalized: the largest 95th percentile (over a mesh's triangles, unweighted) "
+         "of s1/s2, the largest s1/s2, and the smallest and largest s1 s2 over the successful meshes. "
+         "A nearly collapsed UV triangle shows here long before it moves a mean.\n\n"
+         "| segmentation | method | p95 s1/s2 (worst mesh) | largest s1/s2 | smallest s1 s2 | largest s1 s2 |\n"
+         "|---|---|---:|---:|---:|---:|\n";
+  for(const std::string& segmentation : o.segmentations)
+    for(DS::Parameterization_method method : o.methods)
+    {
+      const Cell c = cell_of(cases, results, segmentation, method);
+      out << "| " << segmentation_title(segmentation) << " | " << DS::to_string(method) << " | "
+          << fixed(c.extreme("conformal_ratio_p95"), 3) << " | " << format_double(c.extreme("max_conformal_ratio"))
+          << " | " << format_double(c.extreme("min_area_scale", true)) << " | "
+          << format_double(c.extreme("max_area_scale")) << " |\n";
+    }
+  out << "\n";
+
+  write_peers_block(out, o, files, cases, results);
 
   // Failures, grouped by reason.
   std::map<std::tuple<std::string, std::string, std::string>, std::vector<std::string> > groups;
@@ -1176,6 +1292,7 @@ int main(int argc, char** argv)
     ->check(CLI::Range(1u, 16384u));
   app.add_option("--machine-note", o.machine_note, "machine description printed in the table")
     ->capture_default_str();
+  app.add_option("--peers", o.peers_file, "CSV of the peers' numbers to print beside ours (see peers.csv)");
   app.add_flag("--quiet,-q", o.quiet, "no progress lines on stderr");
   CLI11_PARSE(app, argc, argv);
 

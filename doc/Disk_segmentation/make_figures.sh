@@ -41,27 +41,29 @@ colored() { # OUTPUT.png, then disk_uv options; renders the charts on the mesh
   echo "  fig/$out"
 }
 
+echo "The paper's charts against the distortion bound, merge-tree descent and smoothed borders:"
+colored elephant_charts_paper.png --unbounded --rough-borders
+atlas elephant_atlas_paper.png --unbounded --rough-borders
+colored elephant_charts_bounded.png
+atlas elephant_atlas_bounded.png
+
 echo "Packing (default threshold eps_5):"
 atlas elephant_atlas_tight.png --packer tight
 atlas elephant_atlas_grid.png --packer grid
 
-echo "Merge threshold (tight packing, and the charts on the mesh):"
+echo "Merge threshold (the paper's charts, tight packing, and the charts on the mesh):"
 for N in 3 4 5 6; do
   e="$(eps "$N")"
   echo "  eps_$N = $e"
-  atlas "elephant_atlas_eps$N.png" --threshold "$e"
-  colored "elephant_mesh_eps$N.png" --threshold "$e" --max-distortion inf
+  atlas "elephant_atlas_eps$N.png" --threshold "$e" --unbounded --rough-borders
+  colored "elephant_mesh_eps$N.png" --threshold "$e" --unbounded --rough-borders
 done
 
-echo "Distortion-driven splitting:"
-atlas elephant_atlas_nosplit.png --max-distortion inf
-atlas elephant_atlas_split.png
-
-echo "Pipeline stages on the mesh (segmentation only: --max-distortion inf):"
+echo "Pipeline stages on the mesh (the paper's segmentation: --unbounded --rough-borders):"
 # The tool writes only its final charts: merging disabled (--threshold 1e9)
 # shows the disks after refinement; the default shows the merged patches.
-colored elephant_stage_refined.png --threshold 1e9 --max-distortion inf
-colored elephant_stage_merged.png --max-distortion inf
+colored elephant_stage_refined.png --threshold 1e9 --unbounded --rough-borders
+colored elephant_stage_merged.png --unbounded --rough-borders
 colored elephant_stage_charts.png
 
 echo "Sizes:"

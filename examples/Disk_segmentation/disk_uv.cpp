@@ -41,6 +41,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <limits>
 #include <string>
 #include <sys/resource.h>
 #include <unistd.h>
@@ -97,7 +98,9 @@ nlohmann::json report_json(const std::string& input, const Mesh& mesh, const DS:
     charts.push_back({ { "patch", c.patch }, { "faces", c.faces }, { "requested", DS::to_string(c.requested) },
                        { "used", DS::to_string(c.used) }, { "fallback", c.fallback }, { "split", c.split },
                        { "valid", c.valid }, { "problem", c.problem },
-                       { "angle_distortion", c.angle_distortion }, { "area_distortion", c.area_distortion } });
+                       { "angle_distortion", c.angle_distortion }, { "area_distortion", c.area_distortion },
+                       { "max_stretch", c.max_stretch }, { "min_area_scale", c.min_area_scale },
+                       { "max_area_scale", c.max_area_scale }, { "stretch_p95", c.stretch_p95 } });
   return {
     { "input", input },
     { "faces", r.number_of_faces },
@@ -184,7 +187,8 @@ int main(int argc, char** argv)
   std::string method_name = DS::to_string(DS::default_parameterization_method), packer_name = "tight";
   std::size_t n = 10, k = 5;
   double threshold = DS::regular_polygon_threshold(5), padding = 2;
-  double max_distortion = DS::default_max_area_distortion;
+  DS::Distortion_bound bound;
+  bool unbounded = false, rough_borders = false;
   std::size_t max_chart_faces = DS::default_max_chart_faces;
   unsigned int resolution = 1024, threads = 0;
   bool no_fallback = false, quiet = false;
@@ -205,8 +209,20 @@ int main(int argc, char** argv)
   app.add_option("-n,--seeds", n, "number of farthest-point seeds")->capture_default_str()->check(non_negative_count);
   app.add_option("-k,--subsamples", k, "seeds used to re-sample a region that is not a disk")->capture_default_str()->check(non_negative_count);
   app.add_option("--threshold", threshold, "merge score threshold (eps_5 = 0.7624 by default)")->capture_default_str();
-  app.add_option("--max-distortion", max_distortion,
-                 "split charts whose mean |log(area ratio)| exceeds this (inf: never)")->capture_default_str();
+  app.add_option("--max-angle-distortion", bound.max_angle_distortion,
+                 "largest mean |log(s1/s2)| of a chart (inf: no bound)")->capture_default_str();
+  app.add_option("--max-area-distortion", bound.max_area_distortion,
+                 "largest mean |log(s1 s2)| of a chart, scaled to its 3D area (inf: no bound)")->capture_default_str();
+  app.add_option("--max-stretch", bound.max_stretch,
+                 "largest s1/s2 of any triangle (inf: no bound)")->capture_default_str();
+  app.add_option("--max-area-scale", bound.max_area_scale,
+                 "largest s1 s2 and 1/(s1 s2) of any triangle (inf: no bound)")->capture_default_str();
+  app.add_option("--max-stretch-p95", bound.max_stretch_p95,
+                 "largest 95th percentile of s1/s2 over a chart's triangles (inf: no bound)")->capture_default_str();
+  app.add_flag("--unbounded", unbounded,
+               "no distortion bound: the paper's charts (only invalid ones are redone or split)");
+  app.add_flag("--rough-borders", rough_borders,
+               "keep the saw teeth of chart borders (the paper's segmentation; smoothed by default)");
   app.add_option("--max-chart-faces", max_chart_faces,
                  "split larger patches before parameterizing them (bounds memory)")->capture_default_str()->check(non_negative_count);
   app.add_option("--threads", threads, "maximum number of threads (0: all)")->capture_default_str()->check(non_negative_count);
@@ -267,9 +283,15 @@ int main(int argc, char** argv)
     else if(packer_name == "grid") packer = DS::Packing_method::GRID;
     else throw disk_uv::Tool_error("unknown packer '" + packer_name + "' (expected tight or grid)");
 
+    const double inf = std::numeric_limits<double>::infinity();
     const auto settings =
       DS::parameters::number_of_seeds(n).number_of_subsamples(k).merge_threshold(threshold)
-        .parameterization_method(method).use_fallback(!no_fallback).max_area_distortion(max_distortion)
+        .parameterization_method(method).use_fallback(!no_fallback)
+        .max_angle_distortion(unbounded ? inf : bound.max_angle_distortion)
+        .max_area_distortion(unbounded ? inf : bound.max_area_distortion)
+        .max_stretch(unbounded ? inf : bound.max_stretch).max_area_scale(unbounded ? inf : bound.max_area_scale)
+        .max_stretch_p95(unbounded ? inf : bound.max_stretch_p95)
+        .smooth_borders(!rough_borders)
         .max_chart_faces(max_chart_faces).packing_method(packer)
         .texture_resolution(resolution).padding_in_texels(padding).number_of_threads(threads);
     DS::check_uv_atlas_parameters(settings);

@@ -11,9 +11,11 @@
 #include <CGAL/Disk_segmentation/topology.h>
 #include <CGAL/Disk_segmentation/voronoi_fps_segmentation.h>
 #include <CGAL/Disk_segmentation/refine_to_topological_disks.h>
+#include <CGAL/Disk_segmentation/Merge_tree.h>
 #include <CGAL/Disk_segmentation/merge_disk_regions.h>
 #include <CGAL/Disk_segmentation/segment_into_disks.h>
 #include <CGAL/Disk_segmentation/Parameterization_method.h>
+#include <CGAL/Disk_segmentation/Distortion_bound.h>
 #include <CGAL/Disk_segmentation/parameterize_patches.h>
 #include <CGAL/Disk_segmentation/pack_patches.h>
 #include <CGAL/Disk_segmentation/uv_atlas.h>

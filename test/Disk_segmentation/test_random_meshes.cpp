@@ -626,7 +626,10 @@ TEST(RandomMeshes, ComponentsOfWildlyDifferentScalesGiveValidAtlases)
         Mesh tm;
         TS::to_mesh(c.soup, tm);
         Atlas a;
-        ASSERT_NO_THROW(a = make_atlas(tm, DS::parameters::parameterization_method(method).packing_method(packer)));
+        // Unbounded: the check below counts single-triangle charts, which the
+        // bound makes on purpose for methods that pin the border on a circle.
+        ASSERT_NO_THROW(a = make_atlas(tm, DS::parameters::parameterization_method(method).packing_method(packer)
+                                             .distortion_bound(DS::Distortion_bound::unbounded())));
         expect_valid_atlas_per_component(tm, a, c.face_scale);
         expect_charts_within_components(tm, a);
         expect_no_assertion_failure(a);

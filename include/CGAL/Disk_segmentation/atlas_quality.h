@@ -75,6 +75,13 @@ struct Atlas_quality
   Distortion_statistics atlas_area_distortion;
   /// Mean of \f$ s_1/s_2 \f$ (1 is ideal).
   double conformal_ratio = 0;
+  /// 95th percentile of \f$ s_1/s_2 \f$ over the measured triangles, unweighted (as the peers' tables).
+  double conformal_ratio_p95 = 1;
+  /// Largest \f$ s_1/s_2 \f$.
+  double max_conformal_ratio = 1;
+  /// Smallest and largest \f$ s_1 s_2 \f$, chart-normalized: how much the worst triangles are
+  /// shrunk or blown up in the texture.
+  double min_area_scale = 1, max_area_scale = 1;
   /// Mean of \f$ (s_1^2 + s_2^2 + s_1^{-2} + s_2^{-2})/4 \f$, chart-normalized (1 is ideal).
   double symmetric_dirichlet = 0;
 
@@ -327,6 +334,7 @@ Atlas_quality atlas_quality(const TriangleMesh& tm, UVMap uv_map, FacePatchMap f
   // Per-face distortion; s1 s2 is rescaled by the chart's (or the atlas's)
   // 3D-to-UV area ratio so that the normalized map preserves area overall.
   std::vector<std::pair<double, double> > angle, area, atlas_area;
+  std::vector<double> ratios;
   double weight = 0, ratio = 0, dirichlet = 0;
   double b_area = 0, b_angle = 0, b_dirichlet = 0, b_atlas_area = 0, b_atlas_dirichlet = 0;
   const double atlas_normalization = (total_uv > 0) ? total_3d / total_uv : 1.;
@@ -358,6 +366,9 @@ Atlas_quality atlas_quality(const TriangleMesh& tm, UVMap uv_map, FacePatchMap f
     area.emplace_back(std::abs(std::log(c1 * c2)), w);
     atlas_area.emplace_back(std::abs(std::log(a1 * a2)), w);
     ratio += w * s1 / s2;
+    ratios.push_back(s1 / s2);
+    q.min_area_scale = ratios.size() == 1 ? c1 * c2 : (std::min)(q.min_area_scale, c1 * c2);
+    q.max_area_scale = ratios.size() == 1 ? c1 * c2 : (std::max)(q.max_area_scale, c1 * c2);
     dirichlet += w * (c1 * c1 + c2 * c2 + 1 / (c1 * c1) + 1 / (c2 * c2)) / 4;
     b_area += w * (c1 * c2 + 1 / (c1 * c2) - 2);
     b_angle += w * (s1 / s2 + s2 / s1 - 2);
@@ -368,6 +379,15 @@ Atlas_quality atlas_quality(const TriangleMesh& tm, UVMap uv_map, FacePatchMap f
   }
   q.flipped_percent = F > 0 ? 100. * double(q.flipped_faces) / double(F) : 0.;
   q.degenerate_percent = F > 0 ? 100. * double(q.degenerate_faces) / double(F) : 0.;
+  if(!ratios.empty())
+  {
+    // The nearest-rank percentile: the value below which 95% of the triangles lie.
+    const std::size_t rank = (std::min)(ratios.size() - 1,
+                                        static_cast<std::size_t>(std::ceil(0.95 * double(ratios.size()))) - 1);
+    std::nth_element(ratios.begin(), ratios.begin() + rank, ratios.end());
+    q.conformal_ratio_p95 = ratios[rank];
+    q.max_conformal_ratio = *std::max_element(ratios.begin(), ratios.end());
+  }
   q.angle_distortion = internal::distortion_statistics(std::move(angle));
   q.area_distortion = internal::distortion_statistics(std::move(area));
   q.atlas_area_distortion = internal::distortion_statistics(std::move(atlas_area));

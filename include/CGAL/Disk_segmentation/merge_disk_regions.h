@@ -7,6 +7,7 @@
 #include <CGAL/disable_warnings.h>
 
 #include <CGAL/Disk_segmentation/Input_error.h>
+#include <CGAL/Disk_segmentation/Merge_tree.h>
 #include <CGAL/Disk_segmentation/parameters.h>
 #include <CGAL/Disk_segmentation/internal/Disk_region_merger.h>
 #include <CGAL/Disk_segmentation/internal/Face_partition.h>
@@ -57,12 +58,30 @@ double merge_threshold_parameter(const NamedParameters& np)
 }
 
 // `labels` numbers disk regions canonically; merges them and renumbers.
+// `tree`, if not null, receives the merges and the leaf of every face.
 inline std::size_t merge_regions(const Indexed_triangle_mesh& m, std::vector<Index>& labels,
-                                 std::size_t number_of_regions, double threshold)
+                                 std::size_t number_of_regions, double threshold, Merge_tree* tree = nullptr)
 {
+  if(tree != nullptr)
+  {
+    tree->number_of_leaves = number_of_regions;
+    tree->face_leaves.assign(labels.begin(), labels.end());
+  }
   Disk_region_merger merger(m, labels, number_of_regions);
   merger.run(threshold);
+  if(tree != nullptr)
+    tree->merges = merger.merges();
   return make_canonical(labels);
+}
+
+// The `merge_tree` named parameter: a Merge_tree* or null.
+template <typename NamedParameters>
+Merge_tree* merge_tree_parameter(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  return choose_parameter(get_parameter(np, Disk_segmentation::internal_np::merge_tree),
+                          static_cast<Merge_tree*>(nullptr));
 }
 
 } // namespace internal
@@ -102,6 +121,12 @@ inline std::size_t merge_regions(const Indexed_triangle_mesh& m, std::vector<Ind
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{`regular_polygon_threshold(5)`, about 0.7624, the paper's best setting}
 ///     \cgalParamExtra{must be finite and >= 0; 0 merges as long as the union stays a disk}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{merge_tree}
+///     \cgalParamDescription{receives the merges done (see `Merge_tree`); its leaves are the
+///       regions of `face_patch_map` as given, numbered in the order of their first face in `faces(tm)`}
+///     \cgalParamType{`Merge_tree*`}
+///     \cgalParamDefault{`nullptr`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_point_map}
 ///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
@@ -154,7 +179,8 @@ std::size_t merge_disk_regions(const TriangleMesh& tm,
     for(internal::Index f : regions[r]) labels[f] = r;
   }
 
-  const std::size_t count = internal::merge_regions(m, labels, regions.size(), threshold);
+  const std::size_t count =
+    internal::merge_regions(m, labels, regions.size(), threshold, internal::merge_tree_parameter(np));
   internal::write_face_labels(face_handles, labels, face_patch_map);
   return count;
 }

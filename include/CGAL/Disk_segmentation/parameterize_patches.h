@@ -6,11 +6,18 @@
 
 #include <CGAL/disable_warnings.h>
 
+#include <CGAL/Disk_segmentation/Distortion_bound.h>
 #include <CGAL/Disk_segmentation/Input_error.h>
+#include <CGAL/Disk_segmentation/Merge_tree.h>
 #include <CGAL/Disk_segmentation/Parameterization_method.h>
+#include <CGAL/Disk_segmentation/merge_disk_regions.h>
 #include <CGAL/Disk_segmentation/parameters.h>
 #include <CGAL/Disk_segmentation/refine_to_topological_disks.h>
+#include <CGAL/Disk_segmentation/internal/Border_smoother.h>
+#include <CGAL/Disk_segmentation/internal/Chart_distortion.h>
+#include <CGAL/Disk_segmentation/internal/Chart_merging.h>
 #include <CGAL/Disk_segmentation/internal/Chart_parameterization.h>
+#include <CGAL/Disk_segmentation/internal/Chart_restriction.h>
 #include <CGAL/Disk_segmentation/internal/Face_partition.h>
 #include <CGAL/Disk_segmentation/internal/Indexed_triangle_mesh.h>
 #include <CGAL/Disk_segmentation/internal/Progress.h>
@@ -55,7 +62,7 @@ struct Chart_report
   /// `true` if `used` differs from `requested` because the requested result was invalid.
   bool fallback = false;
   /// `true` if the chart is a piece of a patch that was split (no method gave a valid chart,
-  /// its area distortion exceeded `max_area_distortion`, or it had more than `max_chart_faces` faces).
+  /// it exceeded the distortion bound, or it had more than `max_chart_faces` faces).
   bool split = false;
   /// `true` if the chart's UVs are valid (finite, no flipped or degenerate triangle, simple border).
   bool valid = false;
@@ -68,6 +75,12 @@ struct Chart_report
   double angle_distortion = 0;
   /// Area-weighted mean of |log(s1 s2)| with the chart scaled to its 3D area (0 for an isometry).
   double area_distortion = 0;
+  /// Largest s1/s2 of a triangle of the chart.
+  double max_stretch = 1;
+  /// Smallest and largest s1 s2 of a triangle, the chart scaled to its 3D area.
+  double min_area_scale = 1, max_area_scale = 1;
+  /// 95th percentile of s1/s2 over the chart's triangles.
+  double stretch_p95 = 1;
 };
 
 /// \ingroup PkgDiskSegmentationRef
@@ -96,18 +109,6 @@ struct Parameterization_report
 constexpr Parameterization_method default_parameterization_method = Parameterization_method::ARAP;
 
 /// \ingroup PkgDiskSegmentationRef
-/// The `max_area_distortion` of `parameterize_patches()` when none is
-/// given: a chart whose area-weighted mean \f$ |\log(s_1 s_2)| \f$ (chart
-/// scaled to its 3D area) exceeds 1, i.e. whose triangles are on average
-/// more than e = 2.7 times too large or too small, is split. That catches
-/// the tube-like charts closed at one end that no flattening keeps near
-/// isometric (on the 89k-face refined elephant the benchmark-variant area
-/// distortion drops from 12.3 to 0.29, for 32 charts instead of 18 and about
-/// 50% more time); `std::numeric_limits<double>::infinity()` keeps the
-/// paper's charts unchanged.
-constexpr double default_max_area_distortion = 1.0;
-
-/// \ingroup PkgDiskSegmentationRef
 /// The `max_chart_faces` of `parameterize_patches()` when none is given:
 /// patches of more than \f$ 2^{17} \f$ = 131,072 faces are split before
 /// they are parameterized. The time and memory of a chart's sparse
@@ -125,9 +126,31 @@ struct Parameterization_settings
   Parameterization_method method;
   bool use_fallback, require_disks;
   unsigned int threads;
-  double max_area_distortion;
+  Distortion_bound bound;
   std::size_t max_chart_faces;
+  bool smooth_borders, merge_charts;
 };
+
+// The distortion bound from its four named parameters.
+template <typename NamedParameters>
+Distortion_bound distortion_bound_parameters(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Distortion_bound b =
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::distortion_bound), Distortion_bound());
+  b.max_angle_distortion =
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::max_angle_distortion), b.max_angle_distortion);
+  b.max_area_distortion =
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::max_area_distortion), b.max_area_distortion);
+  b.max_stretch = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::max_stretch), b.max_stretch);
+  b.max_area_scale =
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::max_area_scale), b.max_area_scale);
+  b.max_stretch_p95 =
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::max_stretch_p95), b.max_stretch_p95);
+  b.check();
+  return b;
+}
 
 // The named parameters of parameterize_patches(), checked.
 template <typename NamedParameters>
@@ -141,10 +164,9 @@ Parameterization_settings parameterization_settings(const NamedParameters& np)
   s.use_fallback = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::use_fallback), true);
   s.require_disks = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::require_disk_patches), true);
   s.threads = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_threads), 0u);
-  s.max_area_distortion = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::max_area_distortion),
-                                           default_max_area_distortion);
-  if(!(s.max_area_distortion > 0))
-    throw Input_error("max_area_distortion must be > 0 (infinity disables splitting)");
+  s.bound = distortion_bound_parameters(np);
+  s.smooth_borders = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::smooth_borders), true);
+  s.merge_charts = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::merge_charts), true);
   s.max_chart_faces = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::max_chart_faces),
                                        default_max_chart_faces);
   if(s.max_chart_faces < 1)
@@ -176,13 +198,65 @@ void for_each_index(std::size_t n, unsigned int threads, const Work& work)
     work(i);
 }
 
+inline double region_area(const Indexed_triangle_mesh& m, const std::vector<Index>& faces)
+{
+  double area = 0;
+  for(Index f : faces)
+    area += m.area(f);
+  return area;
+}
+
 // What splitting a chart needs: farthest-point sampling and the disk test.
 struct Splitter
 {
-  explicit Splitter(const Indexed_triangle_mesh& m) : fps(m), topology(m) {}
+  explicit Splitter(const Indexed_triangle_mesh& m)
+    : fps(m), topology(m), labels(m.number_of_faces(), no_index), vertex_slot(m.number_of_vertices(), no_index)
+  {}
   Voronoi_fps fps;
   Region_topology topology;
+  std::vector<Index> labels;       // no_index outside the region being split
+  std::vector<Index> vertex_slot;  // scratch of restrict_chart()
 };
+
+// A parameterized chart whose UVs its sub-disks may reuse.
+typedef std::shared_ptr<const std::pair<Chart, Chart_outcome> > Parent_chart;
+
+// Tries `c` with the UVs its nearest parameterized ancestor `parent` gives
+// it: when they are valid and meet the bound, no solver runs. Pieces of a
+// chart that is over the bound as a whole often meet it (the distortion
+// sits in a part of it).
+template <typename NeedsSplit>
+bool accept_restriction(const Parent_chart& parent, Chart& c, Chart_outcome& outcome, Splitter& splitter,
+                        const NeedsSplit& needs_split)
+{
+  if(!parent || c.faces.size() < 2 || !restrict_chart(parent->first, c, splitter.vertex_slot).empty())
+    return false;
+  Chart_outcome restricted = parent->second;
+  restricted.valid = true;
+  if(needs_split(c, restricted))
+    return false;
+  outcome = restricted;
+  return true;
+}
+
+// Removes the saw teeth between the parts of a split region (see
+// Border_smoother); the parts stay disks.
+inline void smooth_parts(const Border_smoother& smoother, Splitter& splitter, const std::vector<Index>& faces,
+                         std::vector<std::vector<Index> >& parts)
+{
+  for(Index i = 0; i < parts.size(); ++i)
+    for(Index f : parts[i])
+      splitter.labels[f] = i;
+  if(smoother.smooth(splitter.labels, faces) > 0)
+  {
+    for(std::vector<Index>& part : parts)
+      part.clear();
+    for(Index f : faces)
+      parts[splitter.labels[f]].push_back(f);
+  }
+  for(Index f : faces)
+    splitter.labels[f] = no_index;
+}
 
 // Splits a chart into the Voronoi cells of two seeds (one per component if
 // it has more), refined to disks, and parameterizes each piece on its own; a
@@ -198,46 +272,89 @@ struct Splitter
 template <typename NeedsSplit>
 void split_and_parameterize(const Indexed_triangle_mesh& m, Splitter& splitter, const std::vector<Index>& faces,
                             Parameterization_method requested, bool use_fallback, std::vector<Chart>& pieces,
-                            std::vector<Chart_outcome>& outcomes, const NeedsSplit& needs_split)
+                            std::vector<Chart_outcome>& outcomes, const NeedsSplit& needs_split,
+                            double excess_density = 0, Parent_chart parent = Parent_chart())
 {
   if(faces.size() < 2)
     return;
-  // Never valid as a whole, and Voronoi cells of zero arcs split it slowly:
-  // single faces at once.
-  if(m.at_one_point(faces))
+  // Depth-first with an explicit stack (a chain of uneven splits can be as
+  // deep as the region is large): a task either splits its faces, pushing
+  // one task per part in reverse order, or tries its faces as one chart,
+  // so pieces come out in the order a recursion would give.
+  struct Task
   {
-    for(Index f : faces)
-    {
-      Chart c = make_chart(m, std::vector<Index>(1, f));
-      outcomes.push_back(parameterize_chart(m, c, requested, use_fallback));
-      pieces.push_back(std::move(c));
-    }
-    return;
-  }
-  // More than two cells when `faces` has more than two components (a patch
-  // that is not a disk, with require_disk_patches(false)).
-  const std::size_t seeds = splitter.fps.run(faces, 2).size();
-  std::vector<std::vector<Index> > cells(seeds);
-  for(Index f : faces)
-    cells[splitter.fps.cell(f)].push_back(f);
-  const std::vector<std::vector<Index> > parts =
-    refine_region_list(splitter.topology, splitter.fps, std::move(cells), 5);
-  for(const std::vector<Index>& part : parts)
+    std::vector<Index> faces;
+    double excess_density;
+    bool split;
+    Parent_chart parent;
+  };
+  std::vector<Task> stack;
+  stack.push_back(Task{ faces, excess_density, true, std::move(parent) });
+  // Ends: see the bound above; every split task has at least two faces and
+  // makes parts with fewer faces.
+  while(!stack.empty())
   {
-    if(needs_split.too_large(part.size()))
+    Task task = std::move(stack.back());
+    stack.pop_back();
+    if(!task.split)
     {
-      split_and_parameterize(m, splitter, part, requested, use_fallback, pieces, outcomes, needs_split);
+      const double area = region_area(m, task.faces);
+      if(needs_split.too_large(task.faces.size()) ||
+         needs_split.predicted_over_bound(task.excess_density, area, task.faces.size()))
+      {
+        task.split = true;
+        stack.push_back(std::move(task));
+        continue;
+      }
+      Chart c = make_chart(m, task.faces);
+      Chart_outcome outcome;
+      if(accept_restriction(task.parent, c, outcome, splitter, needs_split))
+      {
+        pieces.push_back(std::move(c));
+        outcomes.push_back(outcome);
+        continue;
+      }
+      outcome = parameterize_chart(m, c, requested, use_fallback);
+      if(task.faces.size() == 1 || !needs_split(c, outcome))
+      {
+        pieces.push_back(std::move(c));
+        outcomes.push_back(outcome);
+      }
+      else if(outcome.valid)
+      {
+        const double density = needs_split.excess_density(c, area);
+        stack.push_back(Task{ std::move(task.faces), density, true,
+                              std::make_shared<const std::pair<Chart, Chart_outcome> >(std::move(c), outcome) });
+      }
+      else
+        stack.push_back(Task{ std::move(task.faces), task.excess_density, true, task.parent });
       continue;
     }
-    Chart c = make_chart(m, part);
-    const Chart_outcome outcome = parameterize_chart(m, c, requested, use_fallback);
-    if(part.size() == 1 || !needs_split(c, outcome))
+
+    // Never valid as a whole, and Voronoi cells of zero arcs split it
+    // slowly: single faces at once.
+    if(m.at_one_point(task.faces))
     {
-      pieces.push_back(std::move(c));
-      outcomes.push_back(outcome);
+      for(Index f : task.faces)
+      {
+        Chart c = make_chart(m, std::vector<Index>(1, f));
+        outcomes.push_back(parameterize_chart(m, c, requested, use_fallback));
+        pieces.push_back(std::move(c));
+      }
+      continue;
     }
-    else
-      split_and_parameterize(m, splitter, part, requested, use_fallback, pieces, outcomes, needs_split);
+    // More than two cells when the faces have more than two components (a
+    // patch that is not a disk, with require_disk_patches(false)).
+    const std::size_t seeds = splitter.fps.run(task.faces, 2).size();
+    std::vector<std::vector<Index> > cells(seeds);
+    for(Index f : task.faces)
+      cells[splitter.fps.cell(f)].push_back(f);
+    std::vector<std::vector<Index> > parts =
+      refine_region_list(splitter.topology, splitter.fps, std::move(cells), 5);
+    if(needs_split.smoother != nullptr)
+      smooth_parts(*needs_split.smoother, splitter, task.faces, parts);
+    for(std::size_t i = parts.size(); i-- > 0;)
+      stack.push_back(Task{ std::move(parts[i]), task.excess_density, false, task.parent });
   }
 }
 
@@ -269,16 +386,16 @@ private:
 #endif
 };
 
-// Whether a patch is split: before it is parameterized, when it has more
-// than `max_chart_faces` faces; after, with the fallback on, when its chart
-// is invalid or its area distortion exceeds `max_area_distortion` and it is
-// large enough for pieces to help.
+// Whether a chart is replaced by smaller ones: before it is parameterized,
+// when it has more than `max_chart_faces` faces; after, with the fallback
+// on, when it is invalid or exceeds the distortion bound.
 struct Split_rule
 {
   const Indexed_triangle_mesh& m;
-  double max_area_distortion;
+  Distortion_bound bound;
   std::size_t max_chart_faces;
   bool use_fallback;
+  const Border_smoother* smoother = nullptr;  // smooths the borders between pieces, if not null
 
   bool too_large(std::size_t faces) const { return faces > max_chart_faces; }
 
@@ -288,14 +405,395 @@ struct Split_rule
       return false;
     if(!outcome.valid)
       return true;
-    return c.faces.size() >= smallest_chart_to_split && std::isfinite(max_area_distortion) &&
-           chart_distortion(m, c).area > max_area_distortion;
+    return !bound.is_unbounded() && !chart_distortion(m, c).meets(bound);
   }
 
-  // Charts below this size are not split for distortion: the pieces would
-  // add more seams than they remove distortion.
-  static constexpr std::size_t smallest_chart_to_split = 32;
+  // How far a chart is over the bounds on the means, per unit of 3D area
+  // (0 when it is within them). Distortion grows about linearly with the
+  // area of a chart on a smooth surface, so a piece of a rejected chart is
+  // predicted to have this density times its own area.
+  double excess_density(const Chart& c, double area) const
+  {
+    if(!(area > 0))
+      return 0;
+    const double e = excess(c);
+    return e > 1 ? e / area : 0.;
+  }
+
+  // The larger of a chart's two mean distortions over their bounds (0 for
+  // an infinite bound; above 1: over the bound).
+  double excess(const Chart& c) const
+  {
+    const Chart_distortion d = chart_distortion(m, c);
+    const double e = (std::max)(std::isfinite(bound.max_angle_distortion) ? d.angle / bound.max_angle_distortion : 0.,
+                                std::isfinite(bound.max_area_distortion) ? d.area / bound.max_area_distortion : 0.);
+    return std::isfinite(e) ? e : std::numeric_limits<double>::infinity();
+  }
+
+  // Whether a region is not worth parameterizing: its predicted excess is
+  // so far over the bound that it is split at once. Only a prediction: it
+  // saves time (large regions are parameterized once rather than at every
+  // level) and never lets a chart over the bound through.
+  // Small regions are always tried: developable pieces (a cylinder beside
+  // a sharp corner) break the linear prediction, and they are cheap.
+  bool predicted_over_bound(double density, double area, std::size_t faces) const
+  {
+    return faces >= smallest_predicted_region && density * area > prediction_margin;
+  }
+
+  // Measured on 10 meshes of CGAL's data (see the benchmark README): with
+  // margin 4 the prediction halves the time for 1% more charts (margin 2:
+  // 11% more charts; 1.5x faster than margin 4 only on the largest mesh).
+  static constexpr double prediction_margin = 4.;
+  static constexpr std::size_t smallest_predicted_region = 64;
 };
+
+
+// One chart to try: a node of the merge tree, or a whole patch when there is
+// no tree. `path` (the child indices from the patch's root) orders the
+// charts of a patch the same way whatever the schedule.
+struct Chart_candidate
+{
+  std::size_t patch;
+  std::size_t node;  // Merge_tree node, or no_node
+  std::vector<std::size_t> path;
+  double excess_density;  // of the nearest parameterized ancestor (see Split_rule)
+  Parent_chart parent;    // the nearest valid parameterized ancestor, if any
+  static constexpr std::size_t no_node = std::size_t(-1);
+};
+
+// Faces of every node's leaves, gathered from the tree (or the patches).
+class Candidate_faces
+{
+public:
+  Candidate_faces(const Merge_tree* tree, const std::vector<std::vector<Index> >& patch_faces)
+    : tree_(tree), patch_faces_(patch_faces)
+  {
+    if(tree_ == nullptr)
+      return;
+    leaf_faces_.resize(tree_->number_of_leaves);
+    for(Index f = 0; f < tree_->face_leaves.size(); ++f)
+      leaf_faces_[tree_->face_leaves[f]].push_back(f);
+  }
+
+  std::vector<Index> operator()(const Chart_candidate& c) const
+  {
+    if(c.node == Chart_candidate::no_node)
+      return patch_faces_[c.patch];
+    std::vector<Index> faces;
+    // Ends: every internal node has two children of smaller id.
+    std::vector<std::size_t> stack(1, c.node);
+    while(!stack.empty())
+    {
+      const std::size_t n = stack.back();
+      stack.pop_back();
+      if(tree_->is_leaf(n))
+        faces.insert(faces.end(), leaf_faces_[n].begin(), leaf_faces_[n].end());
+      else
+        for(std::size_t child : tree_->children(n))
+          stack.push_back(child);
+    }
+    std::sort(faces.begin(), faces.end());
+    return faces;
+  }
+
+private:
+  const Merge_tree* tree_;
+  const std::vector<std::vector<Index> >& patch_faces_;
+  std::vector<std::vector<Index> > leaf_faces_;
+};
+
+// The root of every patch in `tree`, after checking that the tree's roots
+// are exactly the patches.
+inline std::vector<std::size_t> patch_roots(const Merge_tree& tree, const std::vector<std::size_t>& face_patches,
+                                            std::size_t number_of_patches)
+{
+  if(tree.face_leaves.size() != face_patches.size())
+    throw Input_error("merge_tree: it has " + std::to_string(tree.face_leaves.size()) + " faces, the mesh " +
+                      std::to_string(face_patches.size()));
+  for(const auto& children : tree.merges)
+    for(std::size_t i = 0; i < 2; ++i)
+      if(children[i] >= tree.number_of_nodes())
+        throw Input_error("merge_tree: a merge names node " + std::to_string(children[i]) + " which does not exist");
+  for(std::size_t i = 0; i < tree.merges.size(); ++i)
+    if(tree.merges[i][0] >= tree.number_of_leaves + i || tree.merges[i][1] >= tree.number_of_leaves + i ||
+       tree.merges[i][0] == tree.merges[i][1])
+      throw Input_error("merge_tree: merge " + std::to_string(i) + " does not join two earlier nodes");
+  const std::vector<std::size_t> parent = tree.parents();
+  const std::size_t none = std::size_t(-1);
+  std::vector<std::size_t> root_of_patch(number_of_patches, none), patch_of_root(tree.number_of_nodes(), none);
+  for(std::size_t f = 0; f < face_patches.size(); ++f)
+  {
+    if(tree.face_leaves[f] >= tree.number_of_leaves)
+      throw Input_error("merge_tree: face #" + std::to_string(f) + " has no leaf");
+    const std::size_t root = tree.root_of_leaf(tree.face_leaves[f], parent);
+    const std::size_t p = face_patches[f];
+    if(root_of_patch[p] == none && patch_of_root[root] == none)
+    {
+      root_of_patch[p] = root;
+      patch_of_root[root] = p;
+    }
+    else if(root_of_patch[p] != root || patch_of_root[root] != p)
+      throw Input_error("merge_tree: its roots are not the patches of face_patch_map (face #" + std::to_string(f) +
+                        ")");
+  }
+  return root_of_patch;
+}
+
+} // namespace internal
+
+namespace internal {
+
+// parameterize_patches() with the merge tree given apart, so that
+// uv_atlas() can pass its own whatever the type of `np`.
+template <typename TriangleMesh, typename FacePatchMap, typename UVMap, typename NamedParameters>
+Parameterization_report parameterize_patches_with_tree(const TriangleMesh& tm, FacePatchMap face_patch_map,
+                                                       UVMap uv_map, const NamedParameters& np,
+                                                       const Merge_tree* tree)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  typedef typename boost::property_traits<UVMap>::value_type UV;
+  using internal::Index;
+
+  const internal::Parameterization_settings settings = internal::parameterization_settings(np);
+  const Parameterization_method method = settings.method;
+  const bool use_fallback = settings.use_fallback;
+  const unsigned int threads = settings.threads;
+  const bool require_disks = settings.require_disks;
+
+  internal::Indexed_triangle_mesh m;
+  std::vector<typename GT::face_descriptor> face_handles;
+  std::vector<typename GT::vertex_descriptor> vertex_handles;
+  internal::build_indexed_triangle_mesh(tm, np, m, face_handles, &vertex_handles);
+
+  const std::vector<std::size_t> ids = internal::read_face_labels(face_handles, face_patch_map);
+  const std::size_t number_of_patches = *std::max_element(ids.begin(), ids.end()) + 1;
+  std::vector<std::vector<Index> > patch_faces(number_of_patches);
+  for(Index f = 0; f < ids.size(); ++f)
+    patch_faces[ids[f]].push_back(f);
+  internal::Region_topology topology(m);
+  for(std::size_t p = 0; p < number_of_patches; ++p)
+  {
+    if(patch_faces[p].empty())
+      throw Input_error("patch ids are not contiguous: no face has id " + std::to_string(p));
+    if(require_disks && !topology.is_disk(patch_faces[p]))
+      throw Input_error("patch " + std::to_string(p) + " is not a topological disk");
+  }
+
+  // Charts are chosen top-down in waves: every candidate of a wave is
+  // parameterized (in parallel); one that is invalid or exceeds the bound
+  // is replaced, in the next wave, by its two children in the merge tree;
+  // a rejected leaf (or patch, without a tree) is split by Voronoi cells
+  // (see Split_rule). Candidates do not depend on each other, so the
+  // charts do not depend on the schedule.
+  std::vector<internal::Chart_candidate> wave;
+  {
+    std::vector<std::size_t> roots;
+    if(tree != nullptr)
+      roots = internal::patch_roots(*tree, ids, number_of_patches);
+    for(std::size_t p = 0; p < number_of_patches; ++p)
+      wave.push_back(internal::Chart_candidate{ p, tree != nullptr ? roots[p] : internal::Chart_candidate::no_node,
+                                                std::vector<std::size_t>(), 0. });
+  }
+  const internal::Candidate_faces candidate_faces(tree, patch_faces);
+  const internal::Border_smoother smoother(m);
+  const internal::Split_rule needs_split{ m, settings.bound, settings.max_chart_faces, use_fallback,
+                                          settings.smooth_borders ? &smoother : nullptr };
+  internal::Per_thread_splitter splitter(m);
+  internal::Progress progress = internal::Progress::from(np);
+
+  std::vector<internal::Kept_chart> kept;
+  // Why the requested method's chart of each patch as a whole was rejected.
+  std::vector<std::string> patch_problem(number_of_patches);
+  std::vector<internal::Chart_candidate> to_split;
+  std::size_t settled = 0;
+  // Waves: each goes one level down the tree, at most its height.
+  while(!wave.empty())
+  {
+    // Largest candidates first, so that threads end together.
+    std::vector<std::vector<Index> > faces(wave.size());
+    for(std::size_t i = 0; i < wave.size(); ++i)
+      faces[i] = candidate_faces(wave[i]);
+    std::vector<std::size_t> order(wave.size());
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return faces[a].size() > faces[b].size(); });
+    std::vector<internal::Chart> charts(wave.size());
+    std::vector<internal::Chart_outcome> outcomes(wave.size());
+    std::vector<char> accepted(wave.size(), 0);
+    internal::for_each_index(wave.size(), threads, [&](std::size_t k) {
+      const std::size_t i = order[k];
+      const double area = internal::region_area(m, faces[i]);
+      if(needs_split.too_large(faces[i].size()) ||
+         needs_split.predicted_over_bound(wave[i].excess_density, area, faces[i].size()))
+        return;
+      charts[i] = internal::make_chart(m, faces[i]);
+      if(internal::accept_restriction(wave[i].parent, charts[i], outcomes[i], splitter.local(), needs_split))
+      {
+        accepted[i] = 1;
+        return;
+      }
+      outcomes[i] = internal::parameterize_chart(m, charts[i], method, use_fallback);
+      accepted[i] = (faces[i].size() == 1 || !needs_split(charts[i], outcomes[i])) ? 1 : 0;
+      if(!accepted[i] && outcomes[i].valid)
+      {
+        wave[i].excess_density = needs_split.excess_density(charts[i], area);
+        wave[i].parent = std::make_shared<const std::pair<internal::Chart, internal::Chart_outcome> >(
+          std::move(charts[i]), outcomes[i]);
+      }
+    });
+
+    std::vector<internal::Chart_candidate> next;
+    for(std::size_t i = 0; i < wave.size(); ++i)
+    {
+      internal::Chart_candidate& c = wave[i];
+      if(c.path.empty())
+        patch_problem[c.patch] = outcomes[i].problem;
+      if(accepted[i])
+      {
+        outcomes[i].problem = patch_problem[c.patch];
+        kept.push_back(internal::Kept_chart{ c.patch, c.path, std::move(charts[i]), outcomes[i] });
+        ++settled;
+      }
+      else if(c.node != internal::Chart_candidate::no_node && !tree->is_leaf(c.node))
+        for(std::size_t j = 0; j < 2; ++j)
+        {
+          internal::Chart_candidate child{ c.patch, tree->children(c.node)[j], c.path, c.excess_density, c.parent };
+          child.path.push_back(j);
+          next.push_back(std::move(child));
+        }
+      else
+        to_split.push_back(std::move(c));
+    }
+    progress("parameterization", (std::min)(settled, number_of_patches), number_of_patches);
+    wave.swap(next);
+  }
+
+  // Rejected leaves (and patches) are split by Voronoi cells, in parallel.
+  {
+    std::vector<std::vector<internal::Chart> > pieces(to_split.size());
+    std::vector<std::vector<internal::Chart_outcome> > piece_outcomes(to_split.size());
+    internal::for_each_index(to_split.size(), threads, [&](std::size_t i) {
+      internal::split_and_parameterize(m, splitter.local(), candidate_faces(to_split[i]), method, use_fallback,
+                                       pieces[i], piece_outcomes[i], needs_split, to_split[i].excess_density,
+                                       to_split[i].parent);
+    });
+    for(std::size_t i = 0; i < to_split.size(); ++i)
+      for(std::size_t j = 0; j < pieces[i].size(); ++j)
+      {
+        std::vector<std::size_t> path = to_split[i].path;
+        path.push_back(j);
+        piece_outcomes[i][j].problem = patch_problem[to_split[i].patch];
+        kept.push_back(
+          internal::Kept_chart{ to_split[i].patch, std::move(path), std::move(pieces[i][j]), piece_outcomes[i][j] });
+      }
+  }
+  if(use_fallback && settings.merge_charts && !settings.bound.is_unbounded())
+    internal::merge_kept_charts(m, topology, kept, needs_split, method, use_fallback,
+                                [&](std::size_t n, const auto& work) { internal::for_each_index(n, threads, work); });
+  progress("parameterization", number_of_patches, number_of_patches);
+
+  // Each patch's charts in tree order; the first keeps the patch's id, the
+  // others are numbered after all patches, in patch order. A patch whose
+  // charts were all merged into others' leaves its id to the last chart,
+  // so that ids stay contiguous.
+  std::sort(kept.begin(), kept.end(), [](const internal::Kept_chart& a, const internal::Kept_chart& b) {
+    return a.patch != b.patch ? a.patch < b.patch : a.path < b.path;
+  });
+  Parameterization_report report;
+  const std::size_t number_of_charts = kept.size();
+  std::vector<internal::Chart> charts(number_of_charts);
+  std::vector<internal::Chart_outcome> outcomes(number_of_charts);
+  {
+    std::vector<char> filled(number_of_charts, 0), first_of_patch(number_of_patches, 1);
+    std::vector<std::size_t> others;
+    for(std::size_t k = 0; k < kept.size(); ++k)
+    {
+      const std::size_t p = kept[k].patch;
+      if(first_of_patch[p] && p < number_of_charts)
+      {
+        charts[p] = std::move(kept[k].chart);
+        outcomes[p] = kept[k].outcome;
+        filled[p] = 1;
+      }
+      else
+        others.push_back(k);
+      first_of_patch[p] = 0;
+    }
+    std::size_t next = 0;
+    for(std::size_t k : others)
+    {
+      while(filled[next])
+        ++next;
+      charts[next] = std::move(kept[k].chart);
+      outcomes[next] = kept[k].outcome;
+      filled[next] = 1;
+    }
+  }
+  // Whether a chart is exactly the faces of one patch.
+  auto is_whole_patch = [&](const internal::Chart& c) {
+    const std::size_t p = ids[c.faces.front()];
+    if(c.faces.size() != patch_faces[p].size())
+      return false;
+    for(Index f : c.faces)
+      if(ids[f] != p)
+        return false;
+    return true;
+  };
+  {
+    std::vector<char> whole(number_of_patches, 0);
+    for(const internal::Chart& c : charts)
+      if(is_whole_patch(c))
+        whole[ids[c.faces.front()]] = 1;
+    for(std::size_t p = 0; p < number_of_patches; ++p)
+      report.number_of_split_patches += whole[p] ? 0 : 1;
+  }
+  report.charts.resize(charts.size());
+  for(std::size_t p = 0; p < charts.size(); ++p)
+  {
+    const internal::Chart& c = charts[p];
+    Chart_report& r = report.charts[p];
+    r.patch = p;
+    r.faces = c.faces.size();
+    r.requested = method;
+    r.used = outcomes[p].used;
+    r.fallback = outcomes[p].fallback;
+    r.split = !is_whole_patch(c);
+    r.valid = outcomes[p].valid;
+    r.method_error = outcomes[p].method_error;
+    r.problem = outcomes[p].problem;
+    const internal::Chart_distortion d = internal::chart_distortion(m, c);
+    r.angle_distortion = d.angle;
+    r.area_distortion = d.area;
+    r.max_stretch = d.max_stretch;
+    r.min_area_scale = d.min_area_scale;
+    r.max_area_scale = d.max_area_scale;
+    r.stretch_p95 = d.stretch_p95;
+    report.number_of_fallbacks += r.fallback ? 1 : 0;
+    report.number_of_invalid_charts += r.valid ? 0 : 1;
+    report.number_of_method_errors += r.method_error ? 1 : 0;
+
+    // The corner of face f whose target is indexed vertex v gets uv[local v].
+    for(std::size_t t = 0; t < c.faces.size(); ++t)
+    {
+      const Index f = c.faces[t];
+      put(face_patch_map, face_handles[f],
+            static_cast<typename boost::property_traits<FacePatchMap>::value_type>(p));
+      // Three halfedges: build_indexed_triangle_mesh checked the triangles.
+      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(face_handles[f], tm), tm))
+        for(int j = 0; j < 3; ++j)
+          if(vertex_handles[m.corners[f][j]] == target(h, tm))
+          {
+            const std::array<double, 2>& u = c.uv[c.triangles[t][j]];
+            put(uv_map, h, UV(u[0], u[1]));
+          }
+    }
+  }
+  return report;
+}
 
 } // namespace internal
 
@@ -311,10 +809,14 @@ struct Split_rule
 /// redone with mean value coordinates, then Tutte's barycentric map, both on
 /// a circle and injective by construction; if even those fail numerically,
 /// the patch is split in two and each piece redone, and the pieces get new
-/// patch ids (appended after the existing ones) in `face_patch_map`. Valid
-/// charts whose area distortion exceeds `max_area_distortion` are split the
-/// same way (the paper does not do this; it removes the few tube-like charts
-/// that no flattening can keep near isometric). Patches with more than
+/// ids in `face_patch_map` (the first chart of a patch keeps the patch's id
+/// where it can; ids stay contiguous, `0` to the number of charts minus
+/// one). Valid
+/// charts that exceed the distortion bound (`Distortion_bound`; the paper
+/// has none) are replaced the same way: with a `merge_tree`, a patch is
+/// first replaced by the two disks it was merged from, recursively down to
+/// the tree's leaves, which are then split; the candidates of one tree level
+/// are parameterized in parallel. Patches with more than
 /// `max_chart_faces` faces are split the same way before they are
 /// parameterized, with or without the fallback.
 ///
@@ -349,12 +851,36 @@ struct Split_rule
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{max_area_distortion}
-///     \cgalParamDescription{charts (of at least 32 faces) whose area-weighted mean of
-///       \f$ |\log(s_1 s_2)| \f$ exceeds this value are split and redone, recursively; only
-///       with `use_fallback`}
+///   \cgalParamNBegin{distortion_bound}
+///     \cgalParamDescription{the distortion every chart of two faces or more must meet (only with
+///       `use_fallback`); a single triangle is laid out isometrically}
+///     \cgalParamType{`Distortion_bound`}
+///     \cgalParamDefault{`Distortion_bound()`; `Distortion_bound::unbounded()` keeps the paper's charts}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{max_angle_distortion, max_area_distortion, max_stretch, max_area_scale, max_stretch_p95}
+///     \cgalParamDescription{override one field of `distortion_bound`}
 ///     \cgalParamType{`double`}
-///     \cgalParamDefault{`default_max_area_distortion` (1.0); infinity disables splitting}
+///     \cgalParamDefault{the field of `distortion_bound`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{smooth_borders}
+///     \cgalParamDescription{whether the borders between the pieces of a split patch lose their saw
+///       teeth (see `segment_into_disks()`)}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{merge_charts}
+///     \cgalParamDescription{whether adjacent charts are merged, once chosen, when their union is a disk
+///       that meets the bound (only with `use_fallback` and a bound); merged charts may join pieces of
+///       different patches}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{merge_tree}
+///     \cgalParamDescription{the merges that made the patches (filled by `segment_into_disks()`); charts
+///       over the bound are replaced by their children in it before they are split by Voronoi cells}
+///     \cgalParamType{`Merge_tree*`}
+///     \cgalParamDefault{`nullptr`: over-bound patches are split by Voronoi cells at once}
+///     \cgalParamExtra{its roots must be the patches of `face_patch_map`, else `Input_error`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{max_chart_faces}
 ///     \cgalParamDescription{patches with more faces are split (recursively, in two) before they are
@@ -405,134 +931,7 @@ Parameterization_report parameterize_patches(const TriangleMesh& tm,
                                              UVMap uv_map,
                                              const NamedParameters& np = parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  typedef boost::graph_traits<TriangleMesh> GT;
-  typedef typename GT::halfedge_descriptor halfedge_descriptor;
-  typedef typename boost::property_traits<UVMap>::value_type UV;
-  using internal::Index;
-
-  const internal::Parameterization_settings settings = internal::parameterization_settings(np);
-  const Parameterization_method method = settings.method;
-  const bool use_fallback = settings.use_fallback;
-  const unsigned int threads = settings.threads;
-  const bool require_disks = settings.require_disks;
-  const double max_area_distortion = settings.max_area_distortion;
-
-  internal::Indexed_triangle_mesh m;
-  std::vector<typename GT::face_descriptor> face_handles;
-  std::vector<typename GT::vertex_descriptor> vertex_handles;
-  internal::build_indexed_triangle_mesh(tm, np, m, face_handles, &vertex_handles);
-
-  const std::vector<std::size_t> ids = internal::read_face_labels(face_handles, face_patch_map);
-  const std::size_t number_of_patches = *std::max_element(ids.begin(), ids.end()) + 1;
-  std::vector<std::vector<Index> > patch_faces(number_of_patches);
-  for(Index f = 0; f < ids.size(); ++f)
-    patch_faces[ids[f]].push_back(f);
-  internal::Region_topology topology(m);
-  for(std::size_t p = 0; p < number_of_patches; ++p)
-  {
-    if(patch_faces[p].empty())
-      throw Input_error("patch ids are not contiguous: no face has id " + std::to_string(p));
-    if(require_disks && !topology.is_disk(patch_faces[p]))
-      throw Input_error("patch " + std::to_string(p) + " is not a topological disk");
-  }
-
-  // Largest charts first, so that threads end together.
-  std::vector<std::size_t> order(number_of_patches);
-  std::iota(order.begin(), order.end(), std::size_t(0));
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return patch_faces[a].size() > patch_faces[b].size(); });
-
-  // Each task parameterizes one patch and, if needed, splits it (see
-  // Split_rule); pieces are numbered after the parallel pass, in patch
-  // order, so ids do not depend on scheduling.
-  const internal::Split_rule needs_split{ m, max_area_distortion, settings.max_chart_faces, use_fallback };
-  std::vector<std::vector<internal::Chart> > pieces(number_of_patches);
-  std::vector<std::vector<internal::Chart_outcome> > piece_outcomes(number_of_patches);
-  internal::Per_thread_splitter splitter(m);
-  internal::Progress progress = internal::Progress::from(np);
-  internal::for_each_index(number_of_patches, threads, [&](std::size_t i) {
-    const std::size_t p = order[i];
-    if(needs_split.too_large(patch_faces[p].size()))
-    {
-      internal::split_and_parameterize(m, splitter.local(), patch_faces[p], method, use_fallback, pieces[p],
-                                       piece_outcomes[p], needs_split);
-      progress.step("parameterization", number_of_patches);
-      return;
-    }
-    internal::Chart chart = internal::make_chart(m, patch_faces[p]);
-    internal::Chart_outcome outcome = internal::parameterize_chart(m, chart, method, use_fallback);
-    if(chart.faces.size() >= 2 && needs_split(chart, outcome))
-    {
-      internal::split_and_parameterize(m, splitter.local(), patch_faces[p], method, use_fallback, pieces[p],
-                                       piece_outcomes[p], needs_split);
-      for(internal::Chart_outcome& o : piece_outcomes[p])
-        o.problem = outcome.problem;
-    }
-    else
-    {
-      pieces[p].push_back(std::move(chart));
-      piece_outcomes[p].push_back(outcome);
-    }
-    progress.step("parameterization", number_of_patches);
-  });
-
-  Parameterization_report report;
-  std::vector<internal::Chart> charts(number_of_patches);
-  std::vector<internal::Chart_outcome> outcomes(number_of_patches);
-  for(std::size_t p = 0; p < number_of_patches; ++p)
-  {
-    report.number_of_split_patches += (pieces[p].size() > 1) ? 1 : 0;
-    charts[p] = std::move(pieces[p][0]);
-    outcomes[p] = piece_outcomes[p][0];
-  }
-  for(std::size_t p = 0; p < number_of_patches; ++p)
-    for(std::size_t i = 1; i < pieces[p].size(); ++i)
-    {
-      charts.push_back(std::move(pieces[p][i]));
-      outcomes.push_back(piece_outcomes[p][i]);
-    }
-
-  report.charts.resize(charts.size());
-  for(std::size_t p = 0; p < charts.size(); ++p)
-  {
-    const internal::Chart& c = charts[p];
-    Chart_report& r = report.charts[p];
-    r.patch = p;
-    r.faces = c.faces.size();
-    r.requested = method;
-    r.used = outcomes[p].used;
-    r.fallback = outcomes[p].fallback;
-    r.split = (p >= number_of_patches) || (c.faces.size() != patch_faces[p].size());
-    r.valid = outcomes[p].valid;
-    r.method_error = outcomes[p].method_error;
-    r.problem = outcomes[p].problem;
-    const internal::Chart_distortion d = internal::chart_distortion(m, c);
-    r.angle_distortion = d.angle;
-    r.area_distortion = d.area;
-    report.number_of_fallbacks += r.fallback ? 1 : 0;
-    report.number_of_invalid_charts += r.valid ? 0 : 1;
-    report.number_of_method_errors += r.method_error ? 1 : 0;
-
-    // The corner of face f whose target is indexed vertex v gets uv[local v].
-    for(std::size_t t = 0; t < c.faces.size(); ++t)
-    {
-      const Index f = c.faces[t];
-      if(p >= number_of_patches || c.faces.size() != patch_faces[p].size())
-        put(face_patch_map, face_handles[f],
-            static_cast<typename boost::property_traits<FacePatchMap>::value_type>(p));
-      // Three halfedges: build_indexed_triangle_mesh checked the triangles.
-      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(face_handles[f], tm), tm))
-        for(int j = 0; j < 3; ++j)
-          if(vertex_handles[m.corners[f][j]] == target(h, tm))
-          {
-            const std::array<double, 2>& u = c.uv[c.triangles[t][j]];
-            put(uv_map, h, UV(u[0], u[1]));
-          }
-    }
-  }
-  return report;
+  return internal::parameterize_patches_with_tree(tm, face_patch_map, uv_map, np, internal::merge_tree_parameter(np));
 }
 
 } // namespace Disk_segmentation

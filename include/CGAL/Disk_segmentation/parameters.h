@@ -39,6 +39,14 @@ enum progress_callback_t { progress_callback };
 enum require_disk_patches_t { require_disk_patches };
 enum max_area_distortion_t { max_area_distortion };
 enum max_chart_faces_t { max_chart_faces };
+enum max_angle_distortion_t { max_angle_distortion };
+enum max_stretch_t { max_stretch };
+enum max_area_scale_t { max_area_scale };
+enum max_stretch_p95_t { max_stretch_p95 };
+enum merge_tree_t { merge_tree };
+enum distortion_bound_t { distortion_bound };
+enum smooth_borders_t { smooth_borders };
+enum merge_charts_t { merge_charts };
 
 } // namespace internal_np
 
@@ -90,6 +98,14 @@ struct Named_function_parameters
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(require_disk_patches_t, require_disk_patches)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(max_area_distortion_t, max_area_distortion)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(max_chart_faces_t, max_chart_faces)
+  CGAL_DISK_SEGMENTATION_ADD_PARAMETER(max_angle_distortion_t, max_angle_distortion)
+  CGAL_DISK_SEGMENTATION_ADD_PARAMETER(max_stretch_t, max_stretch)
+  CGAL_DISK_SEGMENTATION_ADD_PARAMETER(max_area_scale_t, max_area_scale)
+  CGAL_DISK_SEGMENTATION_ADD_PARAMETER(max_stretch_p95_t, max_stretch_p95)
+  CGAL_DISK_SEGMENTATION_ADD_PARAMETER(merge_tree_t, merge_tree)
+  CGAL_DISK_SEGMENTATION_ADD_PARAMETER(distortion_bound_t, distortion_bound)
+  CGAL_DISK_SEGMENTATION_ADD_PARAMETER(smooth_borders_t, smooth_borders)
+  CGAL_DISK_SEGMENTATION_ADD_PARAMETER(merge_charts_t, merge_charts)
 #undef CGAL_DISK_SEGMENTATION_ADD_PARAMETER
 };
 
@@ -162,8 +178,33 @@ CGAL_DISK_SEGMENTATION_ADD_PARAMETER(progress_callback_t, progress_callback)
 /// Whether `parameterize_patches()` refuses patches that are not topological disks (`bool`).
 CGAL_DISK_SEGMENTATION_ADD_PARAMETER(require_disk_patches_t, require_disk_patches)
 /// \ingroup PkgDiskSegmentationRef
-/// Charts whose mean area distortion exceeds this value are split (`double`).
+/// Largest area-weighted mean \f$ |\log(s_1 s_2)| \f$ of a chart (`double`, see `Distortion_bound`).
 CGAL_DISK_SEGMENTATION_ADD_PARAMETER(max_area_distortion_t, max_area_distortion)
+/// \ingroup PkgDiskSegmentationRef
+/// Largest area-weighted mean \f$ |\log(s_1/s_2)| \f$ of a chart (`double`, see `Distortion_bound`).
+CGAL_DISK_SEGMENTATION_ADD_PARAMETER(max_angle_distortion_t, max_angle_distortion)
+/// \ingroup PkgDiskSegmentationRef
+/// Largest \f$ s_1/s_2 \f$ of any triangle of a chart (`double`, see `Distortion_bound`).
+CGAL_DISK_SEGMENTATION_ADD_PARAMETER(max_stretch_t, max_stretch)
+/// \ingroup PkgDiskSegmentationRef
+/// Largest \f$ \max(s_1 s_2, 1/(s_1 s_2)) \f$ of any triangle of a chart (`double`, see `Distortion_bound`).
+CGAL_DISK_SEGMENTATION_ADD_PARAMETER(max_area_scale_t, max_area_scale)
+/// \ingroup PkgDiskSegmentationRef
+/// Largest 95th percentile of \f$ s_1/s_2 \f$ over the triangles of a chart (`double`, see `Distortion_bound`).
+CGAL_DISK_SEGMENTATION_ADD_PARAMETER(max_stretch_p95_t, max_stretch_p95)
+/// \ingroup PkgDiskSegmentationRef
+/// All the bounds at once (`Distortion_bound`); the five parameters above override its fields.
+CGAL_DISK_SEGMENTATION_ADD_PARAMETER(distortion_bound_t, distortion_bound)
+/// \ingroup PkgDiskSegmentationRef
+/// Whether the saw teeth of region borders are removed (`bool`; see `segment_into_disks()`).
+CGAL_DISK_SEGMENTATION_ADD_PARAMETER(smooth_borders_t, smooth_borders)
+/// \ingroup PkgDiskSegmentationRef
+/// Whether adjacent charts that meet the distortion bound together are merged (`bool`; see `parameterize_patches()`).
+CGAL_DISK_SEGMENTATION_ADD_PARAMETER(merge_charts_t, merge_charts)
+/// \ingroup PkgDiskSegmentationRef
+/// Pointer to a `Merge_tree` that `merge_disk_regions()` and `segment_into_disks()` fill,
+/// and that `parameterize_patches()` reads to choose charts top-down (`Merge_tree*`).
+CGAL_DISK_SEGMENTATION_ADD_PARAMETER(merge_tree_t, merge_tree)
 /// \ingroup PkgDiskSegmentationRef
 /// Patches with more faces than this are split before they are parameterized (`std::size_t`).
 CGAL_DISK_SEGMENTATION_ADD_PARAMETER(max_chart_faces_t, max_chart_faces)

@@ -9,6 +9,7 @@
 #include <CGAL/Disk_segmentation/merge_disk_regions.h>
 #include <CGAL/Disk_segmentation/refine_to_topological_disks.h>
 #include <CGAL/Disk_segmentation/voronoi_fps_segmentation.h>
+#include <CGAL/Disk_segmentation/internal/Border_smoother.h>
 
 #include <CGAL/Real_timer.h>
 
@@ -27,10 +28,14 @@ struct Segmentation_steps
   double voronoi_seconds = 0, refine_seconds = 0, merge_seconds = 0;
 };
 
-// The whole method on an indexed mesh; `labels` receives the patch ids.
+// The whole method on an indexed mesh; `labels` receives the patch ids and
+// `tree` (if not null) the merges.
+// With `smooth`, the borders of the refined regions lose their saw teeth
+// (Border_smoother) before they are merged.
 template <typename NamedParameters, typename FaceHandles>
 Segmentation_steps segment_indexed(const Indexed_triangle_mesh& m, const FaceHandles& face_handles,
-                                   const NamedParameters& np, std::vector<Index>& labels)
+                                   const NamedParameters& np, std::vector<Index>& labels, Merge_tree* tree,
+                                   bool smooth)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -48,9 +53,16 @@ Segmentation_steps segment_indexed(const Indexed_triangle_mesh& m, const FaceHan
   steps.voronoi_seconds = timer.time();
   timer.reset();
   steps.refined_regions = refine_regions(m, fps, group_faces_by_label(labels), k, labels);
+  if(smooth)
+  {
+    std::vector<Index> all(m.number_of_faces());
+    for(Index f = 0; f < all.size(); ++f)
+      all[f] = f;
+    Border_smoother(m).smooth(labels, all);
+  }
   steps.refine_seconds = timer.time();
   timer.reset();
-  steps.patches = merge_regions(m, labels, steps.refined_regions, threshold);
+  steps.patches = merge_regions(m, labels, steps.refined_regions, threshold, tree);
   steps.merge_seconds = timer.time();
   write_seeds(np, seeds, face_handles);
   return steps;
@@ -78,8 +90,14 @@ Segmentation_steps segment_indexed(const Indexed_triangle_mesh& m, const FaceHan
 /// @param np an optional sequence of \ref bgl_namedparameters "Named Parameters":
 ///        all those of the three functions (`number_of_seeds`, `first_seed`,
 ///        `random_seed`, `seeds_output_iterator`, `number_of_subsamples`,
-///        `merge_threshold`, `vertex_point_map`, `geom_traits`,
+///        `merge_threshold`, `merge_tree`, `smooth_borders`, `vertex_point_map`, `geom_traits`,
 ///        `face_index_map`, `vertex_index_map`)
+///
+/// With `smooth_borders(true)` (not in the paper; `false` by default here,
+/// `true` in `uv_atlas()`), the refined regions lose the saw teeth of their
+/// borders before they are merged: a face of one region with two edges on
+/// the border of another moves to it when both stay disks, which shortens
+/// the border (see the manual).
 ///
 /// @return the number `P` of patches; every patch is a topological disk
 ///
@@ -96,7 +114,10 @@ std::size_t segment_into_disks(const TriangleMesh& tm,
   internal::build_indexed_triangle_mesh(tm, np, m, face_handles);
 
   std::vector<internal::Index> labels;
-  const std::size_t count = internal::segment_indexed(m, face_handles, np, labels).patches;
+  const std::size_t count = internal::segment_indexed(
+    m, face_handles, np, labels, internal::merge_tree_parameter(np),
+    CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::smooth_borders), false))
+    .patches;
   internal::write_face_labels(face_handles, labels, face_patch_map);
   return count;
 }

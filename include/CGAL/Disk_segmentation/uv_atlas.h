@@ -90,6 +90,17 @@ void check_uv_atlas_parameters(const NamedParameters& np = parameters::default_v
 ///     \cgalParamType{a model of `ReadWritePropertyMap` with `face_descriptor` as key type and `std::size_t` as value type}
 ///     \cgalParamDefault{an internal map}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{smooth_borders}
+///     \cgalParamDescription{whether chart borders lose their saw teeth (see `segment_into_disks()`)}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true` (not in the paper)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{merge_tree}
+///     \cgalParamDescription{receives the merges of the segmentation, from which the charts are
+///       chosen top-down (see `parameterize_patches()`)}
+///     \cgalParamType{`Merge_tree*`}
+///     \cgalParamDefault{an internal tree}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{progress_callback}
 ///     \cgalParamDescription{called with the stage (`"segmentation"`, `"parameterization"`, `"packing"`)
 ///       and a counter of work done out of a total}
@@ -119,13 +130,20 @@ Atlas_report uv_atlas(const TriangleMesh& tm, UVMap uv_map, const NamedParameter
   Default_patch_map default_patch_map = get(CGAL::dynamic_face_property_t<std::size_t>(), tm);
   auto face_patch_map = choose_parameter(get_parameter(np, CGAL::internal_np::face_patch), default_patch_map);
 
+  // The merges guide the choice of charts (see parameterize_patches()).
+  Merge_tree own_tree;
+  Merge_tree* tree = internal::merge_tree_parameter(np);
+  if(tree == nullptr)
+    tree = &own_tree;
+
   progress("segmentation", 0, 3);
   {
     internal::Indexed_triangle_mesh m;
     std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> face_handles;
     internal::build_indexed_triangle_mesh(tm, np, m, face_handles);
     std::vector<internal::Index> labels;
-    const internal::Segmentation_steps steps = internal::segment_indexed(m, face_handles, np, labels);
+    const internal::Segmentation_steps steps = internal::segment_indexed(
+      m, face_handles, np, labels, tree, choose_parameter(get_parameter(np, Disk_segmentation::internal_np::smooth_borders), true));
     internal::write_face_labels(face_handles, labels, face_patch_map);
     report.number_of_faces = m.number_of_faces();
     report.number_of_voronoi_cells = steps.voronoi_cells;
@@ -138,7 +156,7 @@ Atlas_report uv_atlas(const TriangleMesh& tm, UVMap uv_map, const NamedParameter
 
   CGAL::Real_timer timer;
   timer.start();
-  report.parameterization = parameterize_patches(tm, face_patch_map, uv_map, np);
+  report.parameterization = internal::parameterize_patches_with_tree(tm, face_patch_map, uv_map, np, tree);
   report.number_of_charts = report.parameterization.charts.size();
   report.parameterization_seconds = timer.time();
 

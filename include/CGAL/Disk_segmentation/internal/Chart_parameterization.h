@@ -341,11 +341,50 @@ inline std::string parameterize_chart_with(const Indexed_triangle_mesh& m, Chart
     case Parameterization_method::ARAP:
     {
       // Local/global iterations with one factorization (see
-      // Local_global_arap.h for why not SMP::ARAP_parameterizer_3), from
-      // an injective map, keeping only valid iterates. Mean value
-      // coordinates start closer to ARAP; Tutte's map, which ignores the
-      // geometry, is the start when near-degenerate 3D triangles make the
-      // mean value map invalid.
+      // Local_global_arap.h for why not SMP::ARAP_parameterizer_3).
+      std::vector<std::array<std::size_t, 3> > triangles;
+      triangles.reserve(c.triangles.size());
+      for(const auto& t : c.triangles)
+        triangles.push_back({{ t[0], t[1], t[2] }});
+      auto is_valid = [&](const std::vector<std::array<double, 2> >& candidate) {
+        return chart_uv_problem(c, candidate, border_loop).empty();
+      };
+
+      // From LSCM first: its border is free, so ARAP starts near its
+      // optimum and moves the border where a circle would have pinned it.
+      // A valid LSCM map keeps only valid iterates; an invalid one (LSCM
+      // folds some jagged charts) is iterated freely, which often unfolds
+      // it, and kept only if the result is valid.
+      if(run_parameterizer(mesh, SMP::LSCM_parameterizer_3<Chart_mesh>(), border, c).empty())
+      {
+        keep_winding(c);
+        std::vector<std::array<double, 2> > uv = c.uv;
+        if(is_valid(uv))
+        {
+          if(local_global_arap(points, triangles, uv, arap_iterations, is_valid) >= 0)
+          {
+            c.uv.swap(uv);
+            return std::string();
+          }
+        }
+        else if(local_global_arap(points, triangles, uv, arap_iterations,
+                                  [](const std::vector<std::array<double, 2> >&) { return true; }) >= 0)
+        {
+          Chart unfolded = c;
+          unfolded.uv.swap(uv);
+          keep_winding(unfolded);
+          if(is_valid(unfolded.uv))
+          {
+            c.uv.swap(unfolded.uv);
+            return std::string();
+          }
+        }
+      }
+
+      // Then from an injective map on a circle, keeping only valid
+      // iterates. Mean value coordinates start closer to ARAP; Tutte's map,
+      // which ignores the geometry, is the start when near-degenerate 3D
+      // triangles make the mean value map invalid.
       auto valid_start = [&](auto parameterizer) {
         std::string problem = run_parameterizer(mesh, parameterizer, border, c);
         if(problem.empty())
@@ -362,15 +401,8 @@ inline std::string parameterize_chart_with(const Indexed_triangle_mesh& m, Chart
         if(!problem.empty())
           return "ARAP: no valid initialization (" + problem + ")";
       }
-      std::vector<std::array<std::size_t, 3> > triangles;
-      triangles.reserve(c.triangles.size());
-      for(const auto& t : c.triangles)
-        triangles.push_back({{ t[0], t[1], t[2] }});
       std::vector<std::array<double, 2> > uv = c.uv;
-      const int kept = local_global_arap(points, triangles, uv, arap_iterations,
-                                         [&](const std::vector<std::array<double, 2> >& candidate) {
-                                           return chart_uv_problem(c, candidate, border_loop).empty();
-                                         });
+      const int kept = local_global_arap(points, triangles, uv, arap_iterations, is_valid);
       if(kept < 0)
         return "ARAP: cannot factor the cotangent Laplacian (degenerate triangles)";
       c.uv.swap(uv);
@@ -438,47 +470,6 @@ inline Chart_outcome parameterize_chart(const Indexed_triangle_mesh& m, Chart& c
   outcome.used = chain.back();
   outcome.fallback = chain.size() > 1;
   return outcome;
-}
-
-// Area-weighted mean distortion of a chart, the chart normalized to the 3D
-// area (so that only the parameterization is measured, not its scale).
-struct Chart_distortion
-{
-  double angle = 0;  // mean |log(s1 / s2)|
-  double area = 0;   // mean |log(s1 s2)|
-};
-
-inline Chart_distortion chart_distortion(const Indexed_triangle_mesh& m, const Chart& c)
-{
-  double area_3d = 0, area_uv = 0;
-  std::vector<Triangle_jacobian> jacobians;
-  jacobians.reserve(c.triangles.size());
-  for(const auto& t : c.triangles)
-  {
-    jacobians.push_back(triangle_jacobian(m.points[c.vertices[t[0]]], m.points[c.vertices[t[1]]],
-                                          m.points[c.vertices[t[2]]], c.uv[t[0]], c.uv[t[1]], c.uv[t[2]]));
-    area_3d += jacobians.back().area_3d;
-    area_uv += jacobians.back().area_3d * jacobians.back().determinant;
-  }
-  Chart_distortion d;
-  if(!(area_3d > 0) || !(area_uv > 0))
-    return d;
-  const double normalization = std::sqrt(area_3d / area_uv);
-  double weight = 0;
-  for(const Triangle_jacobian& j : jacobians)
-  {
-    if(!j.valid() || !(j.determinant > 0) || !(j.sigma_min > 0))
-      continue;
-    d.angle += j.area_3d * std::abs(std::log(j.sigma_max / j.sigma_min));
-    d.area += j.area_3d * std::abs(std::log(j.sigma_max * j.sigma_min * normalization * normalization));
-    weight += j.area_3d;
-  }
-  if(weight > 0)
-  {
-    d.angle /= weight;
-    d.area /= weight;
-  }
-  return d;
 }
 
 } // namespace internal

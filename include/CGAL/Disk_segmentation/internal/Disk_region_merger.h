@@ -9,6 +9,7 @@
 #include <CGAL/Disk_segmentation/internal/Indexed_triangle_mesh.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <tuple>
@@ -46,8 +47,10 @@ public:
     : m_(m), labels_(labels),
       faces_(number_of_regions), area_(number_of_regions, 0.),
       version_(number_of_regions, 0), shared_length_(number_of_regions),
-      vertex_mark_(m.number_of_vertices(), 0)
+      vertex_mark_(m.number_of_vertices(), 0), node_(number_of_regions)
   {
+    for(Index r = 0; r < number_of_regions; ++r)
+      node_[r] = r;
     for(Index f = 0; f < labels.size(); ++f)
     {
       faces_[labels[f]].push_back(f);
@@ -105,6 +108,10 @@ public:
     }
     return merges;
   }
+
+  // The merges done, in order: merge i made tree node (regions + i) out of
+  // the two nodes it lists (see Merge_tree).
+  const std::vector<std::array<std::size_t, 2> >& merges() const { return merges_; }
 
 private:
   struct Candidate
@@ -209,6 +216,8 @@ private:
     const bool a_absorbs = faces_[a].size() > faces_[b].size() ||
                            (faces_[a].size() == faces_[b].size() && a < b);
     const Index keep = a_absorbs ? a : b, gone = a_absorbs ? b : a;
+    merges_.push_back({{ node_[a], node_[b] }});
+    node_[keep] = faces_.size() + merges_.size() - 1;
 
     for(Index f : faces_[gone]) labels_[f] = keep;
     faces_[keep].insert(faces_[keep].end(), faces_[gone].begin(), faces_[gone].end());
@@ -246,6 +255,8 @@ private:
   std::vector<Candidate> heap_;
   std::vector<Index> shared_vertices_, parent_;
   std::vector<std::pair<Index, Index> > shared_edges_;
+  std::vector<std::size_t> node_;  // tree node of every live region
+  std::vector<std::array<std::size_t, 2> > merges_;
 };
 
 } // namespace internal

@@ -1,0 +1,176 @@
+// Copyright (c) 2026 The Disk_segmentation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_DISK_SEGMENTATION_INTERNAL_CHART_MERGING_H
+#define CGAL_DISK_SEGMENTATION_INTERNAL_CHART_MERGING_H
+
+#include <CGAL/Disk_segmentation/internal/Chart_distortion.h>
+#include <CGAL/Disk_segmentation/internal/Chart_parameterization.h>
+#include <CGAL/Disk_segmentation/internal/Indexed_triangle_mesh.h>
+#include <CGAL/Disk_segmentation/internal/Region_topology.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Disk_segmentation {
+namespace internal {
+
+// A chart kept by the top-down choice: its patch and path in the merge
+// tree order the charts (see parameterize_patches_with_tree()).
+struct Kept_chart
+{
+  std::size_t patch;
+  std::vector<std::size_t> path;
+  Chart chart;
+  Chart_outcome outcome;
+  bool alive = true;
+};
+
+// Merges adjacent kept charts whose union is a disk and, parameterized,
+// still meets the bound: the descent and the Voronoi splits stop at the
+// first level that meets it, so two pieces of different parents can often
+// be one chart. Pairs go by the merge score of the segmentation (shared
+// border over the square root of the larger area: the most seam removed
+// for the size first). A pair is tried only if the sum of the two charts'
+// excesses (mean distortion over its bound, see Split_rule) is at most 1,
+// as distortion adds up about linearly with area; the others would almost
+// never meet the bound and cost a parameterization each.
+//
+// Rounds: each takes the best untried pairs, no chart twice, tests them in
+// parallel (`for_each`) and applies the successes in order, so the result
+// does not depend on the schedule.
+template <typename Rule, typename ForEach>
+std::size_t merge_kept_charts(const Indexed_triangle_mesh& m, Region_topology& topology, std::vector<Kept_chart>& kept,
+                              const Rule& rule, Parameterization_method method, bool use_fallback,
+                              const ForEach& for_each)
+{
+  const std::size_t n = kept.size();
+  std::vector<Index> label(m.number_of_faces(), no_index);
+  std::vector<double> area(n, 0), excess(n, 0);
+  std::vector<std::size_t> version(n, 0);
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    for(Index f : kept[i].chart.faces)
+    {
+      label[f] = static_cast<Index>(i);
+      area[i] += m.area(f);
+    }
+    excess[i] = rule.excess(kept[i].chart);
+  }
+  std::vector<std::map<std::size_t, double> > shared(n);
+  for(Index f = 0; f < m.number_of_faces(); ++f)
+    for(int e = 0; e < 3; ++e)
+    {
+      const Index g = m.neighbors[f][e];
+      if(g == no_index || g < f || label[f] == no_index || label[g] == no_index || label[f] == label[g])
+        continue;
+      const double l = m.edge_length(f, e);
+      shared[label[f]][label[g]] += l;
+      shared[label[g]][label[f]] += l;
+    }
+
+  typedef std::tuple<std::size_t, std::size_t, std::size_t, std::size_t> Tried;  // a, version, b, version
+  std::set<Tried> tried;
+  std::size_t merges = 0;
+  // Rounds end: every round tries at least one new (pair, versions), a
+  // failure is never retried with the same versions, and a success removes
+  // a chart (at most n - 1 of them).
+  for(;;)
+  {
+    std::vector<std::tuple<double, std::size_t, std::size_t> > candidates;  // -score, a, b
+    for(std::size_t a = 0; a < n; ++a)
+      if(kept[a].alive)
+        for(const auto& entry : shared[a])
+        {
+          const std::size_t b = entry.first;
+          if(b <= a || !(excess[a] + excess[b] <= 1) || tried.count(Tried(a, version[a], b, version[b])) ||
+             rule.too_large(kept[a].chart.faces.size() + kept[b].chart.faces.size()))
+            continue;
+          const double larger = (std::max)(area[a], area[b]);
+          candidates.emplace_back(larger > 0 ? -entry.second / std::sqrt(larger) : 0., a, b);
+        }
+    if(candidates.empty())
+      break;
+    std::sort(candidates.begin(), candidates.end());
+
+    std::vector<std::pair<std::size_t, std::size_t> > round;
+    std::vector<char> busy(n, 0);
+    for(const auto& c : candidates)
+    {
+      const std::size_t a = std::get<1>(c), b = std::get<2>(c);
+      if(busy[a] || busy[b])
+        continue;
+      tried.insert(Tried(a, version[a], b, version[b]));
+      std::vector<Index> faces = kept[a].chart.faces;
+      faces.insert(faces.end(), kept[b].chart.faces.begin(), kept[b].chart.faces.end());
+      if(!topology.is_disk(faces))
+        continue;
+      busy[a] = busy[b] = 1;
+      round.emplace_back(a, b);
+    }
+    if(round.empty())
+      continue;
+
+    std::vector<Chart> unions(round.size());
+    std::vector<Chart_outcome> outcomes(round.size());
+    std::vector<char> accepted(round.size(), 0);
+    for_each(round.size(), [&](std::size_t i) {
+      std::vector<Index> faces = kept[round[i].first].chart.faces;
+      faces.insert(faces.end(), kept[round[i].second].chart.faces.begin(), kept[round[i].second].chart.faces.end());
+      std::sort(faces.begin(), faces.end());
+      unions[i] = make_chart(m, faces);
+      outcomes[i] = parameterize_chart(m, unions[i], method, use_fallback);
+      accepted[i] = rule(unions[i], outcomes[i]) ? 0 : 1;
+    });
+
+    for(std::size_t i = 0; i < round.size(); ++i)
+    {
+      if(!accepted[i])
+        continue;
+      const std::size_t a = round[i].first, b = round[i].second;
+      // The union takes the place of the first of the two in chart order.
+      Kept_chart& keep = kept[a];
+      Kept_chart& gone = kept[b];
+      if(std::tie(gone.patch, gone.path) < std::tie(keep.patch, keep.path))
+      {
+        keep.patch = gone.patch;
+        keep.path = gone.path;
+      }
+      keep.chart = std::move(unions[i]);
+      keep.outcome.used = outcomes[i].used;
+      keep.outcome.fallback = outcomes[i].fallback;
+      gone.alive = false;
+      for(Index f : gone.chart.faces)
+        label[f] = static_cast<Index>(a);
+      area[a] += area[b];
+      excess[a] = rule.excess(keep.chart);
+      shared[a].erase(b);
+      for(const auto& entry : shared[b])
+      {
+        if(entry.first == a)
+          continue;
+        shared[a][entry.first] += entry.second;
+        shared[entry.first].erase(b);
+        shared[entry.first][a] += entry.second;
+      }
+      shared[b].clear();
+      ++version[a];
+      ++version[b];
+      ++merges;
+    }
+  }
+  kept.erase(std::remove_if(kept.begin(), kept.end(), [](const Kept_chart& k) { return !k.alive; }), kept.end());
+  return merges;
+}
+
+} // namespace internal
+} // namespace Disk_segmentation
+} // namespace CGAL
+
+#endif // CGAL_DISK_SEGMENTATION_INTERNAL_CHART_MERGING_H
