@@ -5,6 +5,7 @@
 #define CGAL_DISK_SEGMENTATION_INTERNAL_BORDER_SMOOTHER_H
 
 #include <CGAL/Disk_segmentation/internal/Indexed_triangle_mesh.h>
+#include <CGAL/Disk_segmentation/internal/Vertex_faces.h>
 
 #include <deque>
 #include <unordered_map>
@@ -29,18 +30,7 @@ namespace internal {
 class Border_smoother
 {
 public:
-  explicit Border_smoother(const Indexed_triangle_mesh& m) : m_(m)
-  {
-    vertex_faces_begin_.assign(m.number_of_vertices() + 1, 0);
-    for(const auto& c : m.corners)
-      for(Index v : c) ++vertex_faces_begin_[v + 1];
-    for(std::size_t v = 0; v < m.number_of_vertices(); ++v)
-      vertex_faces_begin_[v + 1] += vertex_faces_begin_[v];
-    vertex_faces_.resize(3 * m.number_of_faces());
-    std::vector<Index> fill(vertex_faces_begin_.begin(), vertex_faces_begin_.end() - 1);
-    for(Index f = 0; f < m.number_of_faces(); ++f)
-      for(Index v : m.corners[f]) vertex_faces_[fill[v]++] = f;
-  }
+  explicit Border_smoother(const Indexed_triangle_mesh& m) : m_(m), vertex_faces_(m) {}
 
   // Moves teeth among the faces of `faces`, whose regions are given by
   // `labels` (indexed by mesh face; faces outside `faces` must have a label
@@ -72,9 +62,9 @@ public:
       labels[f] = b;
       ++moves;
       for(Index v : m_.corners[f])
-        for(Index k = vertex_faces_begin_[v]; k < vertex_faces_begin_[v + 1]; ++k)
-          if(labels[vertex_faces_[k]] != no_index)
-            queue.push_back(vertex_faces_[k]);
+        for(Index k = vertex_faces_.begin[v]; k < vertex_faces_.begin[v + 1]; ++k)
+          if(labels[vertex_faces_.faces[k]] != no_index)
+            queue.push_back(vertex_faces_.faces[k]);
     }
     return moves;
   }
@@ -99,8 +89,8 @@ private:
         continue;
       // Edge i is kept; the apex is the corner opposite to it.
       const Index apex = m_.corners[f][(i + 2) % 3];
-      for(Index k = vertex_faces_begin_[apex]; k < vertex_faces_begin_[apex + 1]; ++k)
-        if(vertex_faces_[k] != f && labels[vertex_faces_[k]] == a)
+      for(Index k = vertex_faces_.begin[apex]; k < vertex_faces_.begin[apex + 1]; ++k)
+        if(vertex_faces_.faces[k] != f && labels[vertex_faces_.faces[k]] == a)
           return false;
       b = x;
       return true;
@@ -109,7 +99,7 @@ private:
   }
 
   const Indexed_triangle_mesh& m_;
-  std::vector<Index> vertex_faces_begin_, vertex_faces_;
+  Vertex_faces vertex_faces_;
 };
 
 } // namespace internal

@@ -7,6 +7,7 @@
 #include <CGAL/disable_warnings.h>
 
 #include <CGAL/Disk_segmentation/internal/Indexed_triangle_mesh.h>
+#include <CGAL/Disk_segmentation/internal/Vertex_faces.h>
 
 #include <algorithm>
 #include <array>
@@ -47,7 +48,7 @@ public:
     : m_(m), labels_(labels),
       faces_(number_of_regions), area_(number_of_regions, 0.),
       version_(number_of_regions, 0), shared_length_(number_of_regions),
-      vertex_mark_(m.number_of_vertices(), 0), node_(number_of_regions)
+      vertex_faces_(m), vertex_mark_(m.number_of_vertices(), 0), node_(number_of_regions)
   {
     for(Index r = 0; r < number_of_regions; ++r)
       node_[r] = r;
@@ -67,17 +68,6 @@ public:
         }
       }
     }
-
-    // Vertex -> incident faces, to find the vertices two regions share.
-    vertex_faces_begin_.assign(m.number_of_vertices() + 1, 0);
-    for(const auto& c : m.corners)
-      for(Index v : c) ++vertex_faces_begin_[v + 1];
-    for(std::size_t v = 0; v < m.number_of_vertices(); ++v)
-      vertex_faces_begin_[v + 1] += vertex_faces_begin_[v];
-    vertex_faces_.resize(3 * m.number_of_faces());
-    std::vector<Index> fill(vertex_faces_begin_.begin(), vertex_faces_begin_.end() - 1);
-    for(Index f = 0; f < m.number_of_faces(); ++f)
-      for(Index v : m.corners[f]) vertex_faces_[fill[v]++] = f;
   }
 
   // Merges while some valid pair scores at least `threshold`; returns the
@@ -170,8 +160,8 @@ private:
         if(vertex_mark_[v] == stamp_)
           continue;
         vertex_mark_[v] = stamp_;
-        for(Index k = vertex_faces_begin_[v]; k < vertex_faces_begin_[v + 1]; ++k)
-          if(labels_[vertex_faces_[k]] == other)
+        for(Index k = vertex_faces_.begin[v]; k < vertex_faces_.begin[v + 1]; ++k)
+          if(labels_[vertex_faces_.faces[k]] == other)
           {
             shared_vertices_.push_back(v);
             break;
@@ -248,7 +238,7 @@ private:
   std::vector<double> area_;
   std::vector<Index> version_;
   std::vector<std::unordered_map<Index, double> > shared_length_;
-  std::vector<Index> vertex_faces_begin_, vertex_faces_;
+  Vertex_faces vertex_faces_;  // to find the vertices two regions share
   std::vector<Index> vertex_mark_;
   Index stamp_ = 0;
   double threshold_ = 0.;

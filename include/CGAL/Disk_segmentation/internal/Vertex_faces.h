@@ -1,0 +1,40 @@
+// Copyright (c) 2026 The Disk_segmentation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_DISK_SEGMENTATION_INTERNAL_VERTEX_FACES_H
+#define CGAL_DISK_SEGMENTATION_INTERNAL_VERTEX_FACES_H
+
+#include <CGAL/Disk_segmentation/internal/Indexed_triangle_mesh.h>
+
+#include <vector>
+
+namespace CGAL {
+namespace Disk_segmentation {
+namespace internal {
+
+// The faces around every vertex of an indexed mesh, in one array: the faces
+// of vertex v are faces[begin[v]] to faces[begin[v + 1] - 1], by increasing
+// face index.
+struct Vertex_faces
+{
+  std::vector<Index> begin, faces;
+
+  explicit Vertex_faces(const Indexed_triangle_mesh& m)
+  {
+    begin.assign(m.number_of_vertices() + 1, 0);
+    for(const auto& c : m.corners)
+      for(Index v : c) ++begin[v + 1];
+    for(std::size_t v = 0; v < m.number_of_vertices(); ++v)
+      begin[v + 1] += begin[v];
+    faces.resize(3 * m.number_of_faces());
+    std::vector<Index> fill(begin.begin(), begin.end() - 1);
+    for(Index f = 0; f < m.number_of_faces(); ++f)
+      for(Index v : m.corners[f]) faces[fill[v]++] = f;
+  }
+};
+
+} // namespace internal
+} // namespace Disk_segmentation
+} // namespace CGAL
+
+#endif // CGAL_DISK_SEGMENTATION_INTERNAL_VERTEX_FACES_H
