@@ -696,10 +696,10 @@ Parameterization_report parameterize_patches_with_tree(const TriangleMesh& tm, F
                                 [&](std::size_t n, const auto& work) { internal::for_each_index(n, threads, work); });
   progress("parameterization", number_of_patches, number_of_patches);
 
-  // Each patch's charts in tree order; the first keeps the patch's id, the
-  // others are numbered after all patches, in patch order. A patch whose
-  // charts were all merged into others' leaves its id to the last chart,
-  // so that ids stay contiguous.
+  // Each patch's charts in tree order; the first keeps the patch's id if
+  // it is below the number of charts, the other charts fill the remaining
+  // ids in that order, so that ids stay contiguous (merging may leave a
+  // patch without a chart of its own).
   std::sort(kept.begin(), kept.end(), [](const internal::Kept_chart& a, const internal::Kept_chart& b) {
     return a.patch != b.patch ? a.patch < b.patch : a.path < b.path;
   });

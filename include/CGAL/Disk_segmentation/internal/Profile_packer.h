@@ -1,0 +1,231 @@
+// Copyright (c) 2026 The Disk_segmentation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Packing of chart shapes rather than of their bounding rectangles: each
+// chart, in each of its four quarter turns, is reduced to its column
+// profile on a grid of cells (per column, the lowest and the highest cell
+// it touches), and charts are dropped, largest first, onto the skyline of
+// those already placed, at the column and turn where their top ends
+// lowest. A jagged or bent chart then nests into the dents of the skyline
+// instead of reserving its whole rectangle.
+
+#ifndef CGAL_DISK_SEGMENTATION_INTERNAL_PROFILE_PACKER_H
+#define CGAL_DISK_SEGMENTATION_INTERNAL_PROFILE_PACKER_H
+
+#include <CGAL/Disk_segmentation/internal/packing_geometry.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <vector>
+
+namespace CGAL {
+namespace Disk_segmentation {
+namespace internal {
+
+// Where the profile packer put a chart: `turns` quarter turns
+// counterclockwise after its frame, and the lower left corner of its box in
+// that frame at (x, y), in units of the square's side.
+struct Profile_placement
+{
+  int turns = 0;
+  double x = 0., y = 0.;
+};
+
+// One chart as the packer needs it: its triangles (three corners each) in
+// its frame, and the density that turns its lengths into UV lengths at
+// scale 1.
+struct Profile_chart
+{
+  const Packing_point* corners = nullptr;
+  std::size_t number_of_corners = 0;
+  double density = 1.;
+  double area = 0.;  // UV area in its frame, to order the charts
+};
+
+class Profile_packer
+{
+public:
+  // `columns` cells across the unit square; every chart keeps `pad_cells`
+  // empty cells between itself and any other chart or the square's sides.
+  Profile_packer(std::size_t columns, std::size_t pad_cells) : n_(columns), pad_(pad_cells) {}
+
+  // Packs every chart at `scale` (UV length = scale * density * length in
+  // its frame). Returns false if one does not fit.
+  bool run(const std::vector<Profile_chart>& charts, double scale, std::vector<Profile_placement>& out)
+  {
+    const std::size_t count = charts.size();
+    out.assign(count, Profile_placement());
+    std::vector<std::size_t> order(count);
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return charts[a].density * charts[a].density * charts[a].area >
+             charts[b].density * charts[b].density * charts[b].area;
+    });
+    skyline_.assign(n_, 0);
+    const long side = static_cast<long>(n_);
+    for(std::size_t i : order)
+    {
+      long best_top = std::numeric_limits<long>::max(), best_y = 0, best_x = 0;
+      int best_turns = -1;
+      for(int turns = 0; turns < 4; ++turns)
+      {
+        if(!profile(charts[i], scale, turns, profiles_[turns]))
+          return false;
+        const Profile& p = profiles_[turns];
+        const long width = static_cast<long>(p.low.size());
+        // Every placement of this turn, each column of the chart checked
+        // against the skyline: at most n columns times its width.
+        for(long x = 0; x + width <= side; ++x)
+        {
+          long y = 0;
+          for(long c = 0; c < width; ++c)
+            y = (std::max)(y, skyline_[x + c] - p.low[c]);
+          const long top = y + p.height;
+          if(top > side)
+            continue;
+          // The cells left empty below the chart, at a small weight: enough
+          // to prefer a dent the chart fits, not to climb for it.
+          long waste = 0;
+          for(long c = 0; c < width; ++c)
+            waste += y + p.low[c] - skyline_[x + c];
+          waste = waste * waste_weight_percent / 100;
+          if(top + waste < best_top || (top + waste == best_top && y < best_y))
+          {
+            best_top = top + waste;
+            best_y = y;
+            best_x = x;
+            best_turns = turns;
+          }
+        }
+      }
+      if(best_turns < 0)
+        return false;
+      const Profile& p = profiles_[best_turns];
+      for(std::size_t c = 0; c < p.high.size(); ++c)
+        if(p.high[c] > 0)
+          skyline_[best_x + c] = (std::max)(skyline_[best_x + c], best_y + p.high[c]);
+      out[i].turns = best_turns;
+      out[i].x = double(best_x + static_cast<long>(pad_)) / double(n_);
+      out[i].y = double(best_y + static_cast<long>(pad_)) / double(n_);
+    }
+    return true;
+  }
+
+private:
+  // A chart's footprint: per column, the lowest cell its padding needs free
+  // (`low`) and one above the highest cell the chart itself covers (`high`,
+  // 0 in the padding columns), relative to the footprint's lower left;
+  // `height` is the footprint's top with the padding.
+  struct Profile
+  {
+    std::vector<long> low, high;
+    long height = 0;
+  };
+
+  // Measured on 10 meshes of CGAL's data (median UV area over the square):
+  // 0.559 without the waste term, 0.583 at 2 %, 0.594 at 5 %, 0.582 at 10 %
+  // and 20 %, 0.572 at 100 %.
+  static constexpr long waste_weight_percent = 5;
+
+  // Rounding of the coordinates must not move a corner out of its cells.
+  static constexpr double slack = 1e-9;
+
+  bool profile(const Profile_chart& chart, double scale, int turns, Profile& p)
+  {
+    const double to_cells = scale * chart.density * double(n_);
+    points_.resize(chart.number_of_corners);
+    Packing_box box;
+    for(std::size_t k = 0; k < chart.number_of_corners; ++k)
+    {
+      Packing_point q = chart.corners[k];
+      for(int t = 0; t < turns; ++t)
+        q = quarter_turn(q);
+      points_[k] = q;
+      box.add(q);
+    }
+    const double w = to_cells * box.width(), h = to_cells * box.height();
+    if(!(w < double(n_)) || !(h < double(n_)))
+      return false;
+    const long columns = static_cast<long>(std::ceil(w + slack));
+    const long pad = static_cast<long>(pad_);
+    std::vector<long> bottom(static_cast<std::size_t>(columns), std::numeric_limits<long>::max());
+    std::vector<long> top(static_cast<std::size_t>(columns), 0);
+    for(std::size_t k = 0; k + 2 < chart.number_of_corners; k += 3)
+    {
+      Packing_point t[3];
+      for(int j = 0; j < 3; ++j)
+        t[j] = { to_cells * (points_[k + j].x - box.xmin), to_cells * (points_[k + j].y - box.ymin) };
+      const double xmin = (std::min)(t[0].x, (std::min)(t[1].x, t[2].x));
+      const double xmax = (std::max)(t[0].x, (std::max)(t[1].x, t[2].x));
+      const long c0 = (std::max)(0L, static_cast<long>(std::floor(xmin - slack)));
+      const long c1 = (std::min)(columns - 1, static_cast<long>(std::floor(xmax + slack)));
+      // The triangle's y-range over the slab of each column it crosses:
+      // its corners inside the slab and its edges' crossings of the slab's
+      // two sides.
+      for(long c = c0; c <= c1; ++c)
+      {
+        const double left = double(c) - slack, right = double(c + 1) + slack;
+        double ylo = std::numeric_limits<double>::infinity(), yhi = -ylo;
+        for(int j = 0; j < 3; ++j)
+        {
+          const Packing_point& a = t[j];
+          const Packing_point& b = t[(j + 1) % 3];
+          if(a.x >= left && a.x <= right)
+          {
+            ylo = (std::min)(ylo, a.y);
+            yhi = (std::max)(yhi, a.y);
+          }
+          for(double side_x : { left, right })
+            if((a.x - side_x) * (b.x - side_x) < 0)
+            {
+              const double y = a.y + (b.y - a.y) * (side_x - a.x) / (b.x - a.x);
+              ylo = (std::min)(ylo, y);
+              yhi = (std::max)(yhi, y);
+            }
+        }
+        if(!(ylo <= yhi))
+          continue;
+        bottom[c] = (std::min)(bottom[c], static_cast<long>(std::floor(ylo - slack)));
+        top[c] = (std::max)(top[c], static_cast<long>(std::floor(yhi + slack)) + 1);
+      }
+    }
+    // A chart is connected, so its columns form one run; a column no
+    // triangle reached (rounding) takes its neighbors' extent.
+    for(long c = 0; c < columns; ++c)
+      if(bottom[c] == std::numeric_limits<long>::max())
+      {
+        bottom[c] = c > 0 ? bottom[c - 1] : 0;
+        top[c] = c > 0 ? top[c - 1] : static_cast<long>(std::ceil(h + slack));
+      }
+    // The footprint: pad columns on each side, pad rows below and above;
+    // the low side of every column is grown by the padding of its
+    // neighbors within pad columns, so that the gap holds sideways too.
+    const long width = columns + 2 * pad;
+    p.low.assign(static_cast<std::size_t>(width), std::numeric_limits<long>::max());
+    p.high.assign(static_cast<std::size_t>(width), 0);
+    long highest = 0;
+    for(long c = 0; c < columns; ++c)
+    {
+      highest = (std::max)(highest, top[c]);
+      p.high[c + pad] = top[c] + pad;
+      for(long d = c; d <= c + 2 * pad; ++d)
+        p.low[d] = (std::min)(p.low[d], bottom[c]);
+    }
+    p.height = highest + 2 * pad;
+    return p.height <= static_cast<long>(n_);
+  }
+
+  std::size_t n_, pad_;
+  std::vector<long> skyline_;
+  std::vector<Packing_point> points_;
+  Profile profiles_[4];
+};
+
+} // namespace internal
+} // namespace Disk_segmentation
+} // namespace CGAL
+
+#endif // CGAL_DISK_SEGMENTATION_INTERNAL_PROFILE_PACKER_H
