@@ -882,7 +882,7 @@ std::string method_title(DS::Parameterization_method m)
     case DS::Parameterization_method::LSCM:
       return "`lscm`: least squares conformal map, free border (the paper's \"Conformal\")";
     case DS::Parameterization_method::ARAP:
-      return "`arap`: as-rigid-as-possible from the mean value map (the paper's \"ARAP\")";
+      return "`arap`: as-rigid-as-possible from the LSCM map (mean value map if LSCM folds) (the paper's \"ARAP\")";
     case DS::Parameterization_method::MEAN_VALUE:
       return "`mvc`: mean value coordinates, border on a circle (not in the paper)";
     case DS::Parameterization_method::TUTTE:
