@@ -100,6 +100,7 @@ std::size_t merge_kept_charts(const Indexed_triangle_mesh& m, Region_topology& t
     std::sort(candidates.begin(), candidates.end());
 
     std::vector<std::pair<std::size_t, std::size_t> > round;
+    std::vector<std::vector<Index> > round_faces;  // the union of each pair, sorted
     std::vector<char> busy(n, 0);
     for(const auto& c : candidates)
     {
@@ -113,6 +114,8 @@ std::size_t merge_kept_charts(const Indexed_triangle_mesh& m, Region_topology& t
         continue;
       busy[a] = busy[b] = 1;
       round.emplace_back(a, b);
+      std::sort(faces.begin(), faces.end());
+      round_faces.push_back(std::move(faces));
     }
     if(round.empty())
       continue;
@@ -121,10 +124,7 @@ std::size_t merge_kept_charts(const Indexed_triangle_mesh& m, Region_topology& t
     std::vector<Chart_outcome> outcomes(round.size());
     std::vector<char> accepted(round.size(), 0);
     for_each(round.size(), [&](std::size_t i) {
-      std::vector<Index> faces = kept[round[i].first].chart.faces;
-      faces.insert(faces.end(), kept[round[i].second].chart.faces.begin(), kept[round[i].second].chart.faces.end());
-      std::sort(faces.begin(), faces.end());
-      unions[i] = make_chart(m, faces);
+      unions[i] = make_chart(m, round_faces[i]);
       outcomes[i] = parameterize_chart(m, unions[i], method, use_fallback);
       accepted[i] = rule(unions[i], outcomes[i]) ? 0 : 1;
     });
