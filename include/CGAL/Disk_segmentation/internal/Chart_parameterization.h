@@ -8,6 +8,7 @@
 
 #include <CGAL/Disk_segmentation/Parameterization_method.h>
 #include <CGAL/Disk_segmentation/internal/Indexed_triangle_mesh.h>
+#include <CGAL/Disk_segmentation/internal/Free_border_lscm.h>
 #include <CGAL/Disk_segmentation/internal/Local_global_arap.h>
 #include <CGAL/Disk_segmentation/internal/Triangle_distortion.h>
 
@@ -67,6 +68,63 @@ inline Chart make_chart(const Indexed_triangle_mesh& m, const std::vector<Index>
   return c;
 }
 
+// The border of a chart that is a disk, as one cycle of local vertices in
+// the orientation of its triangles; empty if the border edges do not form
+// one cycle through distinct vertices.
+inline std::vector<Index> chart_border_loop(const Chart& c)
+{
+  // Directed edges as the triangles give them, grouped by their source
+  // (counting sort): an edge is on the border when its reverse is not
+  // among the edges out of its target.
+  const std::size_t nv = c.vertices.size();
+  std::vector<std::size_t> first(nv + 1, 0);
+  for(const auto& t : c.triangles)
+    for(int i = 0; i < 3; ++i)
+      ++first[t[i] + 1];
+  for(std::size_t v = 0; v < nv; ++v)
+    first[v + 1] += first[v];
+  std::vector<Index> out(first[nv]);
+  {
+    std::vector<std::size_t> fill(first.begin(), first.end() - 1);
+    for(const auto& t : c.triangles)
+      for(int i = 0; i < 3; ++i)
+        out[fill[t[i]]++] = t[(i + 1) % 3];
+  }
+  auto has_edge = [&](Index a, Index b) {
+    return std::find(out.begin() + first[a], out.begin() + first[a + 1], b) != out.begin() + first[a + 1];
+  };
+  std::vector<Index> next(nv, no_index);
+  std::size_t border_edges = 0;
+  Index start = no_index;
+  for(const auto& t : c.triangles)
+    for(int i = 0; i < 3; ++i)
+    {
+      const std::pair<Index, Index> e(t[i], t[(i + 1) % 3]);
+      if(has_edge(e.second, e.first))
+        continue;
+      if(next[e.first] != no_index)
+        return std::vector<Index>();  // a vertex on the border twice
+      next[e.first] = e.second;
+      ++border_edges;
+      start = e.first;
+    }
+  std::vector<Index> loop;
+  if(start == no_index)
+    return loop;
+  // Ends: each step follows a distinct border edge, at most border_edges.
+  Index v = start;
+  do
+  {
+    loop.push_back(v);
+    v = next[v];
+  } while(v != no_index && v != start && loop.size() <= border_edges);
+  if(v != start || loop.size() != border_edges)
+    return std::vector<Index>();
+  return loop;
+}
+
+typedef std::vector<std::array<double, 2> > Chart_uv;
+
 constexpr const char* non_finite_uv = "non-finite UV";
 
 // Whether a vertex of the closed polygon `border` lies within `tolerance` of
@@ -99,7 +157,8 @@ bool border_nearly_touches_itself(const std::vector<Point_2>& border, double tol
       const Point_2& p = border[i];
       // The closest point of the segment, clamped to its ends.
       const double t = length2 > 0 ? (std::max)(0., (std::min)(1., ((p.x() - a.x()) * dx + (p.y() - a.y()) * dy) / length2)) : 0.;
-      if(std::hypot(p.x() - (a.x() + t * dx), p.y() - (a.y() + t * dy)) <= tolerance)
+      const double ex = p.x() - (a.x() + t * dx), ey = p.y() - (a.y() + t * dy);
+      if(ex * ex + ey * ey <= tolerance * tolerance)
         return true;
     }
   }
@@ -140,21 +199,23 @@ inline std::string chart_uv_problem(const Chart& c, const std::vector<std::array
     xmin = (std::min)(xmin, u[0]); xmax = (std::max)(xmax, u[0]);
     ymin = (std::min)(ymin, u[1]); ymax = (std::max)(ymax, u[1]);
   }
-  const double chart_size = std::hypot(xmax - xmin, ymax - ymin);
+  // Squared: 2 area > 1e-10 size longest, without a square root per edge.
+  const double chart_size2 = (xmax - xmin) * (xmax - xmin) + (ymax - ymin) * (ymax - ymin);
   for(std::size_t t = 0; t < c.triangles.size(); ++t)
   {
     if(!(areas[t] > 1e-12 * mean))
       return "degenerate UV triangle";
-    double longest = 0;
+    double longest2 = 0;
     for(int i = 0; i < 3; ++i)
     {
       const auto& a = uv[c.triangles[t][i]];
       const auto& b = uv[c.triangles[t][(i + 1) % 3]];
-      longest = (std::max)(longest, std::hypot(b[0] - a[0], b[1] - a[1]));
+      longest2 = (std::max)(longest2, (b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]));
     }
-    if(!(2 * areas[t] > 1e-10 * chart_size * longest))
+    if(!(4 * areas[t] * areas[t] > 1e-20 * chart_size2 * longest2))
       return "degenerate UV triangle";
   }
+  const double chart_size = std::sqrt(chart_size2);
 
   std::vector<Point_2> polygon;
   polygon.reserve(border_loop.size());
@@ -169,18 +230,20 @@ inline std::string chart_uv_problem(const Chart& c, const std::vector<std::array
 
 // Free-border methods may return the mirror image of the surface; mirroring
 // it back keeps the 3D winding that normal-map baking relies on.
-inline void keep_winding(Chart& c)
+inline void keep_winding(const Chart& c, Chart_uv& uv)
 {
   double signed_area = 0;
   for(const auto& t : c.triangles)
   {
-    const auto& a = c.uv[t[0]]; const auto& b = c.uv[t[1]]; const auto& d = c.uv[t[2]];
+    const auto& a = uv[t[0]]; const auto& b = uv[t[1]]; const auto& d = uv[t[2]];
     signed_area += (b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]);
   }
   if(signed_area < 0)
-    for(auto& u : c.uv)
+    for(auto& u : uv)
       u[0] = -u[0];
 }
+
+inline void keep_winding(Chart& c) { keep_winding(c, c.uv); }
 
 typedef CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> Chart_mesh;
 
@@ -254,6 +317,67 @@ std::string run_parameterizer(Chart_mesh& mesh, Parameterizer parameterizer,
   return std::string();
 }
 
+// A chart's 3D positions and triangles, as the solvers take them.
+struct Chart_geometry
+{
+  std::vector<std::array<double, 3> > points;
+  std::vector<std::array<std::size_t, 3> > triangles;
+};
+
+inline Chart_geometry chart_geometry(const Indexed_triangle_mesh& m, const Chart& c)
+{
+  Chart_geometry g;
+  g.points.reserve(c.vertices.size());
+  for(Index v : c.vertices)
+    g.points.push_back(m.points[v]);
+  g.triangles.reserve(c.triangles.size());
+  for(const auto& t : c.triangles)
+    g.triangles.push_back({{ t[0], t[1], t[2] }});
+  return g;
+}
+
+// ARAP iterations on `c` from `start`. A valid start keeps only valid
+// iterates; an invalid one (LSCM folds some jagged charts, two glued maps
+// may fold along their seam) is iterated freely, which often unfolds it,
+// and kept only if the result is valid. Returns whether `c.uv` is now a
+// valid ARAP map; it is unchanged otherwise.
+inline bool arap_from(Chart& c, const std::vector<Index>& border_loop, const Chart_geometry& g, Chart_uv start)
+{
+  auto is_valid = [&](const Chart_uv& candidate) { return chart_uv_problem(c, candidate, border_loop).empty(); };
+  if(is_valid(start))
+  {
+    if(local_global_arap(g.points, g.triangles, start, arap_iterations, is_valid) < 0)
+      return false;
+  }
+  else
+  {
+    if(local_global_arap(g.points, g.triangles, start, arap_iterations, [](const Chart_uv&) { return true; }) < 0)
+      return false;
+    keep_winding(c, start);
+    if(!is_valid(start))
+      return false;
+  }
+  c.uv.swap(start);
+  return true;
+}
+
+// ARAP from the free-border LSCM map: its border is free, so ARAP starts
+// near its optimum and moves the border where a circle would have pinned
+// it. `border_loop` gets the chart's border (empty if the chart is not a
+// disk). Returns whether `c.uv` is a valid ARAP map.
+inline bool arap_from_lscm(const Indexed_triangle_mesh& m, Chart& c, std::vector<Index>& border_loop)
+{
+  border_loop = chart_border_loop(c);
+  if(border_loop.empty() || m.at_one_point(c.faces))
+    return false;
+  const Chart_geometry g = chart_geometry(m, c);
+  Chart_uv start;
+  if(!free_border_lscm(g.points, g.triangles, std::vector<std::size_t>(border_loop.begin(), border_loop.end()), start))
+    return false;
+  keep_winding(c, start);
+  return arap_from(c, border_loop, g, std::move(start));
+}
+
 // Runs one method on the chart; returns an empty string on success, else
 // what went wrong. The UVs are left in `c.uv` in either case.
 inline std::string parameterize_chart_with(const Indexed_triangle_mesh& m, Chart& c, Parameterization_method method,
@@ -263,18 +387,15 @@ inline std::string parameterize_chart_with(const Indexed_triangle_mesh& m, Chart
   typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_3 Point_3;
 
   c.uv.assign(c.vertices.size(), {{ 0., 0. }});
+  if(method == Parameterization_method::ARAP && c.triangles.size() > 1 && arap_from_lscm(m, c, border_loop))
+    return std::string();
 
   Chart_mesh mesh;
   mesh.reserve(static_cast<Chart_mesh::size_type>(c.vertices.size()),
                static_cast<Chart_mesh::size_type>(3 * c.triangles.size()),
                static_cast<Chart_mesh::size_type>(c.triangles.size()));
-  std::vector<std::array<double, 3> > points;
-  points.reserve(c.vertices.size());
   for(Index v : c.vertices)
-  {
-    points.push_back(m.points[v]);
     mesh.add_vertex(Point_3(m.points[v][0], m.points[v][1], m.points[v][2]));
-  }
   for(const auto& t : c.triangles)
     if(mesh.add_face(Chart_mesh::Vertex_index(t[0]), Chart_mesh::Vertex_index(t[1]), Chart_mesh::Vertex_index(t[2])) ==
        Chart_mesh::null_face())
@@ -342,49 +463,10 @@ inline std::string parameterize_chart_with(const Indexed_triangle_mesh& m, Chart
     {
       // Local/global iterations with one factorization (see
       // Local_global_arap.h for why not SMP::ARAP_parameterizer_3).
-      std::vector<std::array<std::size_t, 3> > triangles;
-      triangles.reserve(c.triangles.size());
-      for(const auto& t : c.triangles)
-        triangles.push_back({{ t[0], t[1], t[2] }});
-      auto is_valid = [&](const std::vector<std::array<double, 2> >& candidate) {
-        return chart_uv_problem(c, candidate, border_loop).empty();
-      };
-
-      // From LSCM first: its border is free, so ARAP starts near its
-      // optimum and moves the border where a circle would have pinned it.
-      // A valid LSCM map keeps only valid iterates; an invalid one (LSCM
-      // folds some jagged charts) is iterated freely, which often unfolds
-      // it, and kept only if the result is valid.
-      if(run_parameterizer(mesh, SMP::LSCM_parameterizer_3<Chart_mesh>(), border, c).empty())
-      {
-        keep_winding(c);
-        std::vector<std::array<double, 2> > uv = c.uv;
-        if(is_valid(uv))
-        {
-          if(local_global_arap(points, triangles, uv, arap_iterations, is_valid) >= 0)
-          {
-            c.uv.swap(uv);
-            return std::string();
-          }
-        }
-        else if(local_global_arap(points, triangles, uv, arap_iterations,
-                                  [](const std::vector<std::array<double, 2> >&) { return true; }) >= 0)
-        {
-          Chart unfolded = c;
-          unfolded.uv.swap(uv);
-          keep_winding(unfolded);
-          if(is_valid(unfolded.uv))
-          {
-            c.uv.swap(unfolded.uv);
-            return std::string();
-          }
-        }
-      }
-
-      // Then from an injective map on a circle, keeping only valid
-      // iterates. Mean value coordinates start closer to ARAP; Tutte's map,
-      // which ignores the geometry, is the start when near-degenerate 3D
-      // triangles make the mean value map invalid.
+      // arap_from_lscm() failed: from an injective map on a circle,
+      // keeping only valid iterates. Mean value coordinates start closer
+      // to ARAP; Tutte's map, which ignores the geometry, is the start
+      // when near-degenerate 3D triangles make the mean value map invalid.
       auto valid_start = [&](auto parameterizer) {
         std::string problem = run_parameterizer(mesh, parameterizer, border, c);
         if(problem.empty())
@@ -401,11 +483,8 @@ inline std::string parameterize_chart_with(const Indexed_triangle_mesh& m, Chart
         if(!problem.empty())
           return "ARAP: no valid initialization (" + problem + ")";
       }
-      std::vector<std::array<double, 2> > uv = c.uv;
-      const int kept = local_global_arap(points, triangles, uv, arap_iterations, is_valid);
-      if(kept < 0)
+      if(!arap_from(c, border_loop, chart_geometry(m, c), c.uv))
         return "ARAP: cannot factor the cotangent Laplacian (degenerate triangles)";
-      c.uv.swap(uv);
       return std::string();
     }
     case Parameterization_method::MEAN_VALUE:

@@ -18,6 +18,40 @@ namespace CGAL {
 namespace Disk_segmentation {
 namespace internal {
 
+// Rank of each vertex in a fill-reducing elimination order (approximate
+// minimum degree on the vertex graph). The LSCM and ARAP systems of a
+// chart are both built on this graph (LSCM's with two unknowns per vertex,
+// side by side), so one ordering serves both: ordering the LSCM system
+// itself, twice as large, cost more than its factorization on small charts.
+inline std::vector<Eigen::Index> vertex_elimination_rank(std::size_t n,
+                                                         const std::vector<std::array<std::size_t, 3> >& triangles)
+{
+  std::vector<Eigen::Triplet<double> > entries;
+  entries.reserve(6 * triangles.size() + n);
+  for(std::size_t v = 0; v < n; ++v)
+    entries.emplace_back(Eigen::Index(v), Eigen::Index(v), 1.);
+  for(const auto& t : triangles)
+    for(int i = 0; i < 3; ++i)
+    {
+      entries.emplace_back(Eigen::Index(t[i]), Eigen::Index(t[(i + 1) % 3]), 1.);
+      entries.emplace_back(Eigen::Index(t[(i + 1) % 3]), Eigen::Index(t[i]), 1.);
+    }
+  Eigen::SparseMatrix<double> graph(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+  graph.setFromTriplets(entries.begin(), entries.end());
+  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> order;
+  Eigen::AMDOrdering<int>()(graph, order);
+  // Eigen's orderings give the inverse permutation (as SimplicialLDLT
+  // uses them): indices()[k] is the k-th vertex to eliminate.
+  std::vector<Eigen::Index> rank(n);
+  for(std::size_t k = 0; k < n; ++k)
+    rank[std::size_t(order.indices()[Eigen::Index(k)])] = Eigen::Index(k);
+  return rank;
+}
+
+// Sparse LDL^T on a matrix already in elimination order.
+typedef Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int> >
+  Ordered_sparse_ldlt;
+
 // As-rigid-as-possible parameterization (Liu et al. 2008) by local/global
 // iterations, free border.
 //
@@ -76,10 +110,12 @@ int local_global_arap(const std::vector<std::array<double, 3> >& points,
 
   // Vertex 0 stays where the initial map put it: that removes the
   // translation from the Laplacian's null space and makes it definite.
+  // The other vertices are numbered in elimination order.
   typedef Eigen::SparseMatrix<double> Matrix;
+  const std::vector<Eigen::Index> rank = vertex_elimination_rank(n, triangles);
   std::vector<Eigen::Triplet<double> > entries;
   entries.reserve(12 * nt);
-  auto unknown = [](std::size_t v) { return static_cast<Eigen::Index>(v) - 1; };
+  auto unknown = [&rank](std::size_t v) { return rank[v] - (rank[v] > rank[0] ? 1 : 0); };
   for(std::size_t t = 0; t < nt; ++t)
     for(int i = 0; i < 3; ++i)
     {
@@ -95,13 +131,14 @@ int local_global_arap(const std::vector<std::array<double, 3> >& points,
     }
   Matrix laplacian(static_cast<Eigen::Index>(n - 1), static_cast<Eigen::Index>(n - 1));
   laplacian.setFromTriplets(entries.begin(), entries.end());
-  Eigen::SimplicialLDLT<Matrix> solver(laplacian);
+  Ordered_sparse_ldlt solver(laplacian);
   if(solver.info() != Eigen::Success)
     return -1;
 
   std::vector<std::array<double, 4> > rotation(nt);
   std::vector<std::array<double, 2> > previous;
-  Eigen::VectorXd rhs_u(n - 1), rhs_v(n - 1);
+  // u and v solved together: one pass over the factor for both.
+  Eigen::MatrixXd rhs(n - 1, 2);
   for(int iteration = 0; iteration < iterations; ++iteration)
   {
     // Local step: the rotation closest to each triangle's current map.
@@ -117,14 +154,15 @@ int local_global_arap(const std::vector<std::array<double, 3> >& points,
         s00 += w * dux * dxx; s01 += w * dux * dxy;
         s10 += w * duy * dxx; s11 += w * duy * dxy;
       }
-      // argmax over rotations R of trace(R^T S).
-      const double angle = std::atan2(s10 - s01, s00 + s11);
-      rotation[t] = {{ std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle) }};
+      // argmax over rotations R of trace(R^T S): the angle of
+      // (s00 + s11, s10 - s01), normalized rather than through atan2/sincos.
+      const double c = s00 + s11, s = s10 - s01, r = std::sqrt(c * c + s * s);
+      rotation[t] = r > 0 ? std::array<double, 4>{{ c / r, -s / r, s / r, c / r }}
+                          : std::array<double, 4>{{ 1., 0., 0., 1. }};
     }
 
     // Global step: L u = sum of w R (x_a - x_b) over edges, vertex 0 fixed.
-    rhs_u.setZero();
-    rhs_v.setZero();
+    rhs.setZero();
     for(std::size_t t = 0; t < nt; ++t)
     {
       const auto& r = rotation[t];
@@ -134,16 +172,17 @@ int local_global_arap(const std::vector<std::array<double, 3> >& points,
         const double w = 0.5 * cot[t][i];
         const double dxx = local[t][i][0] - local[t][(i + 1) % 3][0], dxy = local[t][i][1] - local[t][(i + 1) % 3][1];
         const double ru = r[0] * dxx + r[1] * dxy, rv = r[2] * dxx + r[3] * dxy;
-        if(a != 0) { rhs_u[unknown(a)] += w * ru; rhs_v[unknown(a)] += w * rv; }
-        if(b != 0) { rhs_u[unknown(b)] -= w * ru; rhs_v[unknown(b)] -= w * rv; }
+        if(a != 0) { rhs(unknown(a), 0) += w * ru; rhs(unknown(a), 1) += w * rv; }
+        if(b != 0) { rhs(unknown(b), 0) -= w * ru; rhs(unknown(b), 1) -= w * rv; }
         // Move the fixed vertex's known term to the right-hand side.
-        if(a == 0 && b != 0) { rhs_u[unknown(b)] += w * uv[0][0]; rhs_v[unknown(b)] += w * uv[0][1]; }
-        if(b == 0 && a != 0) { rhs_u[unknown(a)] += w * uv[0][0]; rhs_v[unknown(a)] += w * uv[0][1]; }
+        if(a == 0 && b != 0) { rhs(unknown(b), 0) += w * uv[0][0]; rhs(unknown(b), 1) += w * uv[0][1]; }
+        if(b == 0 && a != 0) { rhs(unknown(a), 0) += w * uv[0][0]; rhs(unknown(a), 1) += w * uv[0][1]; }
       }
     }
-    const Eigen::VectorXd u = solver.solve(rhs_u), v = solver.solve(rhs_v);
+    const Eigen::MatrixXd x = solver.solve(rhs);
     if(solver.info() != Eigen::Success)
       return iteration;
+    auto u = x.col(0), v = x.col(1);
     previous = uv;
     for(std::size_t i = 1; i < n; ++i)
       uv[i] = {{ u[unknown(i)], v[unknown(i)] }};

@@ -1,0 +1,153 @@
+// Copyright (c) 2026 The Disk_segmentation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_DISK_SEGMENTATION_INTERNAL_FREE_BORDER_LSCM_H
+#define CGAL_DISK_SEGMENTATION_INTERNAL_FREE_BORDER_LSCM_H
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Disk_segmentation/internal/Local_global_arap.h>
+
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Disk_segmentation {
+namespace internal {
+
+// Least squares conformal map (Levy et al. 2002) of a disk, free border,
+// as the ARAP start. The same map as SMP::LSCM_parameterizer_3, assembled
+// here from the cotangent Laplacian L and the border's signed area term:
+// the conformal energy is E_D(u) + E_D(v) - A(u, v) = 1/2 x^T H x with
+// H = [L, -M/2; M/2, L], M the antisymmetric border incidence (M_ij = 1 for
+// a border edge i -> j, counterclockwise). SMP's version builds a
+// Surface_mesh, sets of faces and a least squares system row by row for the
+// same factorization; on the charts of the top-down choice (most of them
+// small) that overhead cost more than the factorization.
+//
+// Two border vertices far apart are pinned (the one farthest from the
+// first border vertex, then the one farthest from it, at their 3D
+// distance apart on the u axis), which removes the similarities from the
+// null space. `border` is the chart's border cycle in the orientation of
+// its (counterclockwise) triangles. Returns false when the factorization
+// fails (degenerate triangles); `uv` is then unspecified.
+inline bool free_border_lscm(const std::vector<std::array<double, 3> >& points,
+                             const std::vector<std::array<std::size_t, 3> >& triangles,
+                             const std::vector<std::size_t>& border, std::vector<std::array<double, 2> >& uv)
+{
+  const std::size_t n = points.size();
+  uv.assign(n, {{ 0., 0. }});
+  if(n < 3 || border.size() < 3)
+    return false;
+  auto distance2 = [&](std::size_t a, std::size_t b) {
+    double d = 0;
+    for(int k = 0; k < 3; ++k)
+      d += (points[a][k] - points[b][k]) * (points[a][k] - points[b][k]);
+    return d;
+  };
+  auto farthest_on_border = [&](std::size_t from) {
+    std::size_t best = border[0];
+    for(std::size_t v : border)
+      if(distance2(from, v) > distance2(from, best))
+        best = v;
+    return best;
+  };
+  const std::size_t pin0 = farthest_on_border(border[0]);
+  const std::size_t pin1 = farthest_on_border(pin0);
+  const double span = std::sqrt(distance2(pin0, pin1));
+  if(pin0 == pin1 || !(span > 0))
+    return false;
+  uv[pin1] = {{ span, 0. }};
+
+  // Free vertex k (in elimination order) has unknowns 2k (u) and 2k+1 (v).
+  const Eigen::Index none = -1;
+  const std::vector<Eigen::Index> rank = vertex_elimination_rank(n, triangles);
+  std::vector<Eigen::Index> unknown(n, none);
+  const Eigen::Index free_vertices = static_cast<Eigen::Index>(n) - 2;
+  for(std::size_t v = 0; v < n; ++v)
+    if(v != pin0 && v != pin1)
+      unknown[v] = rank[v] - (rank[v] > rank[pin0] ? 1 : 0) - (rank[v] > rank[pin1] ? 1 : 0);
+  std::vector<Eigen::Triplet<double> > entries;
+  entries.reserve(24 * triangles.size() + 4 * border.size());
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(2 * free_vertices);
+  // Adds h to H at (row, col) for coordinates cr, cc (0: u, 1: v) of
+  // vertices r, c; a pinned column goes to the right-hand side.
+  auto add = [&](std::size_t r, int cr, std::size_t c, int cc, double h) {
+    if(unknown[r] == none)
+      return;
+    const Eigen::Index row = 2 * unknown[r] + cr;
+    if(unknown[c] == none)
+      rhs[row] -= h * uv[c][cc];
+    else
+      entries.emplace_back(row, 2 * unknown[c] + cc, h);
+  };
+
+  for(const auto& t : triangles)
+  {
+    const auto& p0 = points[t[0]];
+    const auto& p1 = points[t[1]];
+    const auto& p2 = points[t[2]];
+    const double corner[3][3] = { { p0[0], p0[1], p0[2] }, { p1[0], p1[1], p1[2] }, { p2[0], p2[1], p2[2] } };
+    for(int i = 0; i < 3; ++i)
+    {
+      // Edge i -> i+1 and the angle at corner i+2 opposite to it.
+      const double* a = corner[i];
+      const double* b = corner[(i + 1) % 3];
+      const double* c = corner[(i + 2) % 3];
+      const double u[3] = { a[0] - c[0], a[1] - c[1], a[2] - c[2] };
+      const double w[3] = { b[0] - c[0], b[1] - c[1], b[2] - c[2] };
+      const double dot = u[0] * w[0] + u[1] * w[1] + u[2] * w[2];
+      const double cx = u[1] * w[2] - u[2] * w[1], cy = u[2] * w[0] - u[0] * w[2], cz = u[0] * w[1] - u[1] * w[0];
+      const double cross = std::sqrt(cx * cx + cy * cy + cz * cz);
+      if(!(cross > 0))
+        return false;
+      // Clamped as in local_global_arap(): needles must not dominate.
+      const double weight = 0.5 * (std::max)(-1e4, (std::min)(1e4, dot / cross));
+      const std::size_t va = t[i], vb = t[(i + 1) % 3];
+      for(int coordinate = 0; coordinate < 2; ++coordinate)
+      {
+        add(va, coordinate, va, coordinate, weight);
+        add(vb, coordinate, vb, coordinate, weight);
+        add(va, coordinate, vb, coordinate, -weight);
+        add(vb, coordinate, va, coordinate, -weight);
+      }
+    }
+  }
+  for(std::size_t k = 0; k < border.size(); ++k)
+  {
+    const std::size_t i = border[k], j = border[(k + 1) % border.size()];
+    // -1/2 (u_i v_j - u_j v_i), symmetrized.
+    add(i, 0, j, 1, -0.5);
+    add(j, 1, i, 0, -0.5);
+    add(j, 0, i, 1, 0.5);
+    add(i, 1, j, 0, 0.5);
+  }
+  if(free_vertices == 0)
+    return true;
+  Eigen::SparseMatrix<double> h(2 * free_vertices, 2 * free_vertices);
+  h.setFromTriplets(entries.begin(), entries.end());
+  Ordered_sparse_ldlt solver(h);
+  if(solver.info() != Eigen::Success)
+    return false;
+  const Eigen::VectorXd x = solver.solve(rhs);
+  if(solver.info() != Eigen::Success)
+    return false;
+  for(std::size_t v = 0; v < n; ++v)
+    if(unknown[v] != none)
+      uv[v] = {{ x[2 * unknown[v]], x[2 * unknown[v] + 1] }};
+  return true;
+}
+
+} // namespace internal
+} // namespace Disk_segmentation
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_DISK_SEGMENTATION_INTERNAL_FREE_BORDER_LSCM_H
