@@ -13,6 +13,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polyhedron_3.h>
+#include <CGAL/Random.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <gtest/gtest.h>
@@ -651,4 +652,128 @@ TEST(Atlas, ObjWrittenByTheToolReadsBackWithTheSameFacesAndUVs)
   EXPECT_EQ(wrong_groups, 0u) << "faces must be grouped by chart";
   std::remove(obj.c_str());
 #endif
+}
+
+namespace {
+
+// What keeps `uv` from mapping the chart's 3D vertices by a similarity: every edge
+// scaled by the same factor (within `tolerance`, relative) and every
+// triangle kept counterclockwise; empty if nothing. Checked edge by edge,
+// apart from the library's distortion code.
+std::string similarity_problem(const DS::internal::Indexed_triangle_mesh& m, const DS::internal::Chart& c,
+                               const std::vector<std::array<double, 2> >& uv, double tolerance)
+{
+  double scale = -1;
+  for(const auto& t : c.triangles)
+  {
+    const auto& a = uv[t[0]];
+    const auto& b = uv[t[1]];
+    const auto& d = uv[t[2]];
+    if(!((b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]) > 0))
+      return "a triangle is clockwise or flat";
+    for(int i = 0; i < 3; ++i)
+    {
+      const auto& p = m.points[c.vertices[t[i]]];
+      const auto& q = m.points[c.vertices[t[(i + 1) % 3]]];
+      const double l3 = std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                                  (p[2] - q[2]) * (p[2] - q[2]));
+      const auto& u = uv[t[i]];
+      const auto& v = uv[t[(i + 1) % 3]];
+      const double l2 = std::sqrt((u[0] - v[0]) * (u[0] - v[0]) + (u[1] - v[1]) * (u[1] - v[1]));
+      if(scale < 0)
+        scale = l2 / l3;
+      if(!(std::abs(l2 / l3 - scale) <= tolerance * scale))
+        return "edge scaled by " + std::to_string(l2 / l3) + " instead of " + std::to_string(scale);
+    }
+  }
+  return scale > 0 ? std::string() : std::string("zero scale");
+}
+
+struct Planar_chart
+{
+  Mesh tm;
+  DS::internal::Indexed_triangle_mesh m;
+  std::vector<Mesh::Face_index> face_handles;
+};
+
+void make_planar_chart(Planar_chart& p)
+{
+  // A disk in z = 0, its inner vertices moved in the plane (by less than a
+  // third of the shortest edge, so no triangle folds) so that no two
+  // triangles have the same shape.
+  p.tm = make(TS::disk(6, 12));
+  CGAL::Random rng(7);
+  for(Mesh::Vertex_index v : vertices(p.tm))
+    if(!is_border(v, p.tm))
+    {
+      const auto& q = p.tm.point(v);
+      p.tm.point(v) = K::Point_3(q.x() + rng.get_double(-0.01, 0.01), q.y() + rng.get_double(-0.01, 0.01), 0.);
+    }
+  DS::internal::build_indexed_triangle_mesh(p.tm, DS::parameters::default_values(), p.m, p.face_handles);
+}
+
+} // namespace
+
+TEST(Atlas, FreeBorderLscmAndArapKeepAPlanarChartUpToASimilarity)
+{
+  // A planar chart has a conformal (indeed isometric) flattening: LSCM must
+  // find it up to a similarity, and ARAP from it must keep it.
+  Planar_chart p;
+  make_planar_chart(p);
+  std::vector<DS::internal::Index> all(p.m.number_of_faces());
+  for(DS::internal::Index f = 0; f < all.size(); ++f) all[f] = f;
+  DS::internal::Chart c = DS::internal::make_chart(p.m, all);
+  const std::vector<DS::internal::Index> border = DS::internal::chart_border_loop(c);
+  ASSERT_EQ(border.size(), 12u);
+  const DS::internal::Chart_geometry g = DS::internal::chart_geometry(p.m, c);
+  std::vector<std::array<double, 2> > lscm;
+  ASSERT_TRUE(DS::internal::free_border_lscm(g.points, g.triangles,
+                                             std::vector<std::size_t>(border.begin(), border.end()), lscm));
+  EXPECT_EQ(similarity_problem(p.m, c, lscm, 1e-6), "");
+
+  std::vector<DS::internal::Index> loop;
+  ASSERT_TRUE(DS::internal::arap_from_lscm(p.m, c, loop));
+  EXPECT_EQ(similarity_problem(p.m, c, c.uv, 1e-6), "");
+}
+
+TEST(Atlas, TwoChartMapsGlueIntoTheMapOfTheirUnion)
+{
+  // Two halves of a planar chart, each laid out by its own similarity (other
+  // rotation, scale and place): glued, they give one similarity of the
+  // whole, and ARAP from the glued map keeps it.
+  Planar_chart p;
+  make_planar_chart(p);
+  std::vector<DS::internal::Index> left, right, all;
+  for(DS::internal::Index f = 0; f < p.m.number_of_faces(); ++f)
+  {
+    double x = 0;
+    for(int i = 0; i < 3; ++i)
+      x += p.m.points[p.m.corners[f][i]][0];
+    (x < 0 ? left : right).push_back(f);
+    all.push_back(f);
+  }
+  auto laid_out = [&](const std::vector<DS::internal::Index>& faces, double angle, double scale, double dx, double dy) {
+    DS::internal::Chart c = DS::internal::make_chart(p.m, faces);
+    c.uv.clear();
+    for(DS::internal::Index v : c.vertices)
+    {
+      const auto& q = p.m.points[v];
+      c.uv.push_back({{ scale * (std::cos(angle) * q[0] - std::sin(angle) * q[1]) + dx,
+                        scale * (std::sin(angle) * q[0] + std::cos(angle) * q[1]) + dy }});
+    }
+    return c;
+  };
+  const DS::internal::Chart a = laid_out(left, 0.3, 2., 5., 1.);
+  const DS::internal::Chart b = laid_out(right, -1.1, 0.5, -3., 2.);
+  DS::internal::Chart u = DS::internal::make_chart(p.m, all);
+  const std::vector<std::array<double, 2> > glued = DS::internal::glue_chart_maps(a, b, u);
+  ASSERT_EQ(glued.size(), u.vertices.size());
+  EXPECT_EQ(similarity_problem(p.m, u, glued, 1e-9), "");
+  ASSERT_TRUE(DS::internal::arap_from_start(p.m, u, glued));
+  EXPECT_EQ(similarity_problem(p.m, u, u.uv, 1e-6), "");
+
+  // Charts that share no vertex have no glued map.
+  const DS::internal::Chart lone = laid_out(std::vector<DS::internal::Index>(1, left.front()), 0., 1., 0., 0.);
+  const DS::internal::Chart far = laid_out(std::vector<DS::internal::Index>(1, right.back()), 0., 1., 0., 0.);
+  EXPECT_TRUE(DS::internal::glue_chart_maps(lone, far, u).empty());
 }

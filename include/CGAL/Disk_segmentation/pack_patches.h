@@ -317,6 +317,42 @@ void frame_charts(Packing_method method, Chart_set<TriangleMesh>& charts)
 
 // The profile packer's layout at the largest scale it reaches, if that is
 // above `rectangle_scale` (the rectangle packing's); else an empty vector.
+// The triangles of corners [begin, end) (three per triangle) that have an
+// edge on the chart's border: a chart's lowest and highest point over any
+// vertical slab lie on its border, so the profile packer needs only these
+// (about the square root of the chart's triangles). An edge is inside when
+// another triangle has it reversed with the same UVs; UVs that differ
+// between the corners of a vertex only keep more triangles. Returns the
+// index of each kept triangle's first corner.
+inline std::vector<std::size_t> border_triangles(const std::vector<Packing_point>& corners, std::size_t begin,
+                                                 std::size_t end)
+{
+  typedef std::array<double, 4> Edge;  // from (x, y) to (x, y)
+  std::vector<Edge> edges;
+  edges.reserve(end - begin);
+  for(std::size_t k = begin; k + 2 < end; k += 3)
+    for(std::size_t j = 0; j < 3; ++j)
+    {
+      const Packing_point& a = corners[k + j];
+      const Packing_point& b = corners[k + (j + 1) % 3];
+      edges.push_back({{ a.x, a.y, b.x, b.y }});
+    }
+  std::sort(edges.begin(), edges.end());
+  std::vector<std::size_t> kept;
+  for(std::size_t k = begin; k + 2 < end; k += 3)
+    for(std::size_t j = 0; j < 3; ++j)
+    {
+      const Packing_point& a = corners[k + j];
+      const Packing_point& b = corners[k + (j + 1) % 3];
+      if(!std::binary_search(edges.begin(), edges.end(), Edge{{ b.x, b.y, a.x, a.y }}))
+      {
+        kept.push_back(k);
+        break;
+      }
+    }
+  return kept;
+}
+
 template <typename TriangleMesh>
 std::vector<Chart_similarity> profile_layout(const Chart_set<TriangleMesh>& charts, const Packing_settings& s,
                                              const std::vector<double>& density, double rectangle_scale,
@@ -330,19 +366,26 @@ std::vector<Chart_similarity> profile_layout(const Chart_set<TriangleMesh>& char
   const std::size_t columns = (std::min)(std::size_t(512), static_cast<std::size_t>(s.resolution));
   const std::size_t pad_cells =
     (std::max)(std::size_t(1), static_cast<std::size_t>(std::ceil(s.padding * double(columns) / s.resolution)));
-  std::vector<Packing_point> framed(charts.corners.size());
+  std::vector<Packing_point> framed;
+  framed.reserve(charts.corners.size());
   std::vector<Profile_chart> input(n);
+  std::vector<std::size_t> first_corner(1, 0);  // of each chart in `framed`, and the end
   double total = 0.;
   for(std::size_t p = 0; p < n; ++p)
   {
     const std::size_t begin = 3 * charts.first_face[p], end = 3 * charts.first_face[p + 1];
-    for(std::size_t k = begin; k < end; ++k)
-      framed[k] = charts.rotation[p](charts.corners[k]);
-    input[p].corners = framed.data() + begin;
-    input[p].number_of_corners = end - begin;
+    for(std::size_t k : border_triangles(charts.corners, begin, end))
+      for(std::size_t j = 0; j < 3; ++j)
+        framed.push_back(charts.rotation[p](charts.corners[k + j]));
+    first_corner.push_back(framed.size());
     input[p].density = density[p];
     input[p].area = charts.uv_area[p];
     total += density[p] * density[p] * charts.uv_area[p];
+  }
+  for(std::size_t p = 0; p < n; ++p)
+  {
+    input[p].corners = framed.data() + first_corner[p];
+    input[p].number_of_corners = first_corner[p + 1] - first_corner[p];
   }
   Profile_packer packer(columns, pad_cells);
   std::vector<Profile_placement> placement, best;
