@@ -39,13 +39,19 @@ struct Kept_chart
 // be one chart. Pairs go by the merge score of the segmentation (shared
 // border over the square root of the larger area: the most seam removed
 // for the size first). A pair is tried only if the sum of the two charts'
-// excesses (mean distortion over its bound, see Split_rule) is at most 1,
-// as distortion adds up about linearly with area; the others would almost
-// never meet the bound and cost a parameterization each.
+// excesses (mean distortion over its bound, see Split_rule) is at most
+// `largest_excess_sum`: distortion adds up about linearly with area, but a
+// union re-parameterized as a whole often does better than the sum; the
+// others would almost never meet the bound and cost a parameterization each.
 //
 // Rounds: each takes the best untried pairs, no chart twice, tests them in
 // parallel (`for_each`) and applies the successes in order, so the result
 // does not depend on the schedule.
+// Measured on 10 meshes of CGAL's data set (medians; time summed): at 1,
+// 34 charts, cut length 15.3, 6.3 s; at 1.15, 30 charts, cut 14.2, 7.3 s;
+// at 1.3, 25.5 charts, cut 12.8, 9.5 s, but UV area 0.52 instead of 0.57.
+constexpr double largest_excess_sum = 1.15;
+
 template <typename Rule, typename ForEach>
 std::size_t merge_kept_charts(const Indexed_triangle_mesh& m, Region_topology& topology, std::vector<Kept_chart>& kept,
                               const Rule& rule, Parameterization_method method, bool use_fallback,
@@ -90,7 +96,7 @@ std::size_t merge_kept_charts(const Indexed_triangle_mesh& m, Region_topology& t
         for(const auto& entry : shared[a])
         {
           const std::size_t b = entry.first;
-          if(b <= a || !(excess[a] + excess[b] <= 1) || tried.count(Tried(a, version[a], b, version[b])) ||
+          if(b <= a || !(excess[a] + excess[b] <= largest_excess_sum) || tried.count(Tried(a, version[a], b, version[b])) ||
              rule.too_large(kept[a].chart.faces.size() + kept[b].chart.faces.size()))
             continue;
           const double larger = (std::max)(area[a], area[b]);

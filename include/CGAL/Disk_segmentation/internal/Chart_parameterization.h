@@ -463,8 +463,18 @@ inline std::string parameterize_chart_with(const Indexed_triangle_mesh& m, Chart
     {
       // Local/global iterations with one factorization (see
       // Local_global_arap.h for why not SMP::ARAP_parameterizer_3).
-      // arap_from_lscm() failed: from an injective map on a circle,
-      // keeping only valid iterates. Mean value coordinates start closer
+      // arap_from_lscm() failed: a chart with several borders (a patch
+      // that is not a disk, with require_disk_patches(false)), which SMP's
+      // LSCM takes, or a fold that free iterations did not undo, which
+      // SMP's other choice of pinned vertices may avoid.
+      if(run_parameterizer(mesh, SMP::LSCM_parameterizer_3<Chart_mesh>(), border, c).empty())
+      {
+        keep_winding(c);
+        if(arap_from(c, border_loop, chart_geometry(m, c), c.uv))
+          return std::string();
+      }
+      // Then from an injective map on a circle, keeping only valid
+      // iterates. Mean value coordinates start closer
       // to ARAP; Tutte's map, which ignores the geometry, is the start
       // when near-degenerate 3D triangles make the mean value map invalid.
       auto valid_start = [&](auto parameterizer) {
