@@ -88,28 +88,15 @@ inline bool free_border_lscm(const std::vector<std::array<double, 3> >& points,
       entries.emplace_back(row, 2 * unknown[c] + cc, h);
   };
 
-  for(const auto& t : triangles)
-  {
-    const auto& p0 = points[t[0]];
-    const auto& p1 = points[t[1]];
-    const auto& p2 = points[t[2]];
-    const double corner[3][3] = { { p0[0], p0[1], p0[2] }, { p1[0], p1[1], p1[2] }, { p2[0], p2[1], p2[2] } };
+  std::vector<std::array<std::array<double, 2>, 3> > frames;
+  std::vector<std::array<double, 3> > cot;
+  if(!isometric_frames(points, triangles, frames, cot))
+    return false;
+  for(std::size_t t = 0; t < triangles.size(); ++t)
     for(int i = 0; i < 3; ++i)
     {
-      // Edge i -> i+1 and the angle at corner i+2 opposite to it.
-      const double* a = corner[i];
-      const double* b = corner[(i + 1) % 3];
-      const double* c = corner[(i + 2) % 3];
-      const double u[3] = { a[0] - c[0], a[1] - c[1], a[2] - c[2] };
-      const double w[3] = { b[0] - c[0], b[1] - c[1], b[2] - c[2] };
-      const double dot = u[0] * w[0] + u[1] * w[1] + u[2] * w[2];
-      const double cx = u[1] * w[2] - u[2] * w[1], cy = u[2] * w[0] - u[0] * w[2], cz = u[0] * w[1] - u[1] * w[0];
-      const double cross = std::sqrt(cx * cx + cy * cy + cz * cz);
-      if(!(cross > 0))
-        return false;
-      // Clamped as in local_global_arap(): needles must not dominate.
-      const double weight = 0.5 * (std::max)(-1e4, (std::min)(1e4, dot / cross));
-      const std::size_t va = t[i], vb = t[(i + 1) % 3];
+      const double weight = 0.5 * cot[t][i];
+      const std::size_t va = triangles[t][i], vb = triangles[t][(i + 1) % 3];
       for(int coordinate = 0; coordinate < 2; ++coordinate)
       {
         add(va, coordinate, va, coordinate, weight);
@@ -118,7 +105,6 @@ inline bool free_border_lscm(const std::vector<std::array<double, 3> >& points,
         add(vb, coordinate, va, coordinate, -weight);
       }
     }
-  }
   for(std::size_t k = 0; k < border.size(); ++k)
   {
     const std::size_t i = border[k], j = border[(k + 1) % border.size()];

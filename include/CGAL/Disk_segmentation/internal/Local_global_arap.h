@@ -52,6 +52,46 @@ inline std::vector<Eigen::Index> vertex_elimination_rank(std::size_t n,
 typedef Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int> >
   Ordered_sparse_ldlt;
 
+// Each triangle isometrically in its own plane (corner 0 at the origin,
+// corner 1 on the x axis) and the cotangent of the angle opposite to each
+// edge (edge i from corner i to corner i+1), clamped so that needle
+// triangles do not dominate a system built on them. The cotangent
+// Laplacian of both ARAP and LSCM (Free_border_lscm.h) comes from here.
+// False if a triangle has a zero edge or no area.
+inline bool isometric_frames(const std::vector<std::array<double, 3> >& points,
+                             const std::vector<std::array<std::size_t, 3> >& triangles,
+                             std::vector<std::array<std::array<double, 2>, 3> >& local,
+                             std::vector<std::array<double, 3> >& cot)
+{
+  const std::size_t nt = triangles.size();
+  local.resize(nt);
+  cot.resize(nt);
+  for(std::size_t t = 0; t < nt; ++t)
+  {
+    const auto& p0 = points[triangles[t][0]];
+    const auto& p1 = points[triangles[t][1]];
+    const auto& p2 = points[triangles[t][2]];
+    const double e[3] = { p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2] };
+    const double f[3] = { p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2] };
+    const double l = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+    const double cx = e[1] * f[2] - e[2] * f[1], cy = e[2] * f[0] - e[0] * f[2], cz = e[0] * f[1] - e[1] * f[0];
+    const double twice_area = std::sqrt(cx * cx + cy * cy + cz * cz);
+    if(!(l > 0) || !(twice_area > 0))
+      return false;
+    local[t] = {{ {{ 0., 0. }}, {{ l, 0. }}, {{ (e[0] * f[0] + e[1] * f[1] + e[2] * f[2]) / l, twice_area / l }} }};
+    for(int i = 0; i < 3; ++i)
+    {
+      // Angle at corner i+2, between the edges to corners i and i+1.
+      const auto& a = local[t][i];
+      const auto& b = local[t][(i + 1) % 3];
+      const auto& c = local[t][(i + 2) % 3];
+      const double ux = a[0] - c[0], uy = a[1] - c[1], vx = b[0] - c[0], vy = b[1] - c[1];
+      cot[t][i] = (std::max)(-1e4, (std::min)(1e4, (ux * vx + uy * vy) / (ux * vy - uy * vx)));
+    }
+  }
+  return true;
+}
+
 // As-rigid-as-possible parameterization (Liu et al. 2008) by local/global
 // iterations, free border.
 //
@@ -79,34 +119,10 @@ int local_global_arap(const std::vector<std::array<double, 3> >& points,
   if(n < 3 || nt == 0)
     return 0;
 
-  // Each triangle isometrically in its own plane; cotangent of the angle
-  // opposite to each edge (edge i goes from corner i to corner i+1).
-  std::vector<std::array<std::array<double, 2>, 3> > local(nt);
-  std::vector<std::array<double, 3> > cot(nt);
-  for(std::size_t t = 0; t < nt; ++t)
-  {
-    const auto& p0 = points[triangles[t][0]];
-    const auto& p1 = points[triangles[t][1]];
-    const auto& p2 = points[triangles[t][2]];
-    const double e[3] = { p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2] };
-    const double f[3] = { p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2] };
-    const double l = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
-    const double cx = e[1] * f[2] - e[2] * f[1], cy = e[2] * f[0] - e[0] * f[2], cz = e[0] * f[1] - e[1] * f[0];
-    const double twice_area = std::sqrt(cx * cx + cy * cy + cz * cz);
-    if(!(l > 0) || !(twice_area > 0))
-      return -1;
-    local[t] = {{ {{ 0., 0. }}, {{ l, 0. }}, {{ (e[0] * f[0] + e[1] * f[1] + e[2] * f[2]) / l, twice_area / l }} }};
-    for(int i = 0; i < 3; ++i)
-    {
-      // Angle at corner i+2, between the edges to corners i and i+1.
-      const auto& a = local[t][i];
-      const auto& b = local[t][(i + 1) % 3];
-      const auto& c = local[t][(i + 2) % 3];
-      const double ux = a[0] - c[0], uy = a[1] - c[1], vx = b[0] - c[0], vy = b[1] - c[1];
-      // Clamped so that needle triangles do not dominate the system.
-      cot[t][i] = (std::max)(-1e4, (std::min)(1e4, (ux * vx + uy * vy) / (ux * vy - uy * vx)));
-    }
-  }
+  std::vector<std::array<std::array<double, 2>, 3> > local;
+  std::vector<std::array<double, 3> > cot;
+  if(!isometric_frames(points, triangles, local, cot))
+    return -1;
 
   // Vertex 0 stays where the initial map put it: that removes the
   // translation from the Laplacian's null space and makes it definite.
