@@ -474,9 +474,9 @@ inline std::string parameterize_chart_with(const Indexed_triangle_mesh& m, Chart
           return std::string();
       }
       // Then from an injective map on a circle, keeping only valid
-      // iterates. Mean value coordinates start closer
-      // to ARAP; Tutte's map, which ignores the geometry, is the start
-      // when near-degenerate 3D triangles make the mean value map invalid.
+      // iterates. Mean value coordinates start closer to ARAP; Tutte's map,
+      // which ignores the geometry, is the start when near-degenerate 3D
+      // triangles make the mean value map invalid.
       auto valid_start = [&](auto parameterizer) {
         std::string problem = run_parameterizer(mesh, parameterizer, border, c);
         if(problem.empty())
