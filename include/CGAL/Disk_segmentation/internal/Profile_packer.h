@@ -25,22 +25,26 @@ namespace CGAL {
 namespace Disk_segmentation {
 namespace internal {
 
-// Where the profile packer put a chart: `turns` quarter turns
-// counterclockwise after its frame, and the lower left corner of its box in
-// that frame at (x, y), in units of the square's side.
+// Where a shape packer put a chart: `turns` quarter turns counterclockwise
+// after its frame (then an eighth of a turn if `diagonal`), and the lower
+// left corner of its box in that frame at (x, y), in units of the square's
+// side.
 struct Profile_placement
 {
   int turns = 0;
+  bool diagonal = false;  // then turned by another eighth of a turn
   double x = 0., y = 0.;
 };
 
-// One chart as the packer needs it: its triangles (three corners each) in
-// its frame, and the density that turns its lengths into UV lengths at
-// scale 1.
+// One chart as the shape packers need it: its triangles (three corners
+// each) in its frame, which of their edges are on its border (bit j: from
+// corner j to corner j + 1; read by the raster packer), and the density that
+// turns its lengths into UV lengths at scale 1.
 struct Profile_chart
 {
   const Packing_point* corners = nullptr;
   std::size_t number_of_corners = 0;
+  const unsigned char* border_edges = nullptr;
   double density = 1.;
   double area = 0.;  // UV area in its frame, to order the charts
 };

@@ -43,6 +43,13 @@ struct Packing_rotation
   // This rotation followed by a quarter turn counterclockwise.
   Packing_rotation quarter_turned() const { return { -s, c }; }
 
+  // This rotation followed by an eighth of a turn counterclockwise.
+  Packing_rotation eighth_turned() const
+  {
+    const double h = std::sqrt(0.5);
+    return { h * (c - s), h * (s + c) };
+  }
+
   // The rotation that maps the unit direction u onto the x axis.
   static Packing_rotation aligning(const Packing_point& u) { return { u.x, -u.y }; }
 };
@@ -161,6 +168,13 @@ struct Frame_extents
 };
 
 inline Packing_point quarter_turn(const Packing_point& u) { return { -u.y, u.x }; }
+
+// An eighth of a turn counterclockwise, as Packing_rotation::eighth_turned().
+inline Packing_point eighth_turn(const Packing_point& u)
+{
+  const double h = std::sqrt(0.5);
+  return { h * (u.x - u.y), h * (u.x + u.y) };
+}
 
 inline Packing_point normalized(const Packing_point& u)
 {
