@@ -49,6 +49,19 @@ struct Profile_chart
   double area = 0.;  // UV area in its frame, to order the charts
 };
 
+// The charts' indices by decreasing UV area at a common scale: the order in
+// which the shape packers place them.
+inline std::vector<std::size_t> largest_first(const std::vector<Profile_chart>& charts)
+{
+  std::vector<std::size_t> order(charts.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return charts[a].density * charts[a].density * charts[a].area >
+           charts[b].density * charts[b].density * charts[b].area;
+  });
+  return order;
+}
+
 class Profile_packer
 {
 public:
@@ -60,14 +73,8 @@ public:
   // its frame). Returns false if one does not fit.
   bool run(const std::vector<Profile_chart>& charts, double scale, std::vector<Profile_placement>& out)
   {
-    const std::size_t count = charts.size();
-    out.assign(count, Profile_placement());
-    std::vector<std::size_t> order(count);
-    std::iota(order.begin(), order.end(), std::size_t(0));
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      return charts[a].density * charts[a].density * charts[a].area >
-             charts[b].density * charts[b].density * charts[b].area;
-    });
+    out.assign(charts.size(), Profile_placement());
+    const std::vector<std::size_t> order = largest_first(charts);
     skyline_.assign(n_, 0);
     const long side = static_cast<long>(n_);
     for(std::size_t i : order)
@@ -166,31 +173,10 @@ private:
       const double xmax = (std::max)(t[0].x, (std::max)(t[1].x, t[2].x));
       const long c0 = (std::max)(0L, static_cast<long>(std::floor(xmin - slack)));
       const long c1 = (std::min)(columns - 1, static_cast<long>(std::floor(xmax + slack)));
-      // The triangle's y-range over the slab of each column it crosses:
-      // its corners inside the slab and its edges' crossings of the slab's
-      // two sides.
       for(long c = c0; c <= c1; ++c)
       {
-        const double left = double(c) - slack, right = double(c + 1) + slack;
-        double ylo = std::numeric_limits<double>::infinity(), yhi = -ylo;
-        for(int j = 0; j < 3; ++j)
-        {
-          const Packing_point& a = t[j];
-          const Packing_point& b = t[(j + 1) % 3];
-          if(a.x >= left && a.x <= right)
-          {
-            ylo = (std::min)(ylo, a.y);
-            yhi = (std::max)(yhi, a.y);
-          }
-          for(double side_x : { left, right })
-            if((a.x - side_x) * (b.x - side_x) < 0)
-            {
-              const double y = a.y + (b.y - a.y) * (side_x - a.x) / (b.x - a.x);
-              ylo = (std::min)(ylo, y);
-              yhi = (std::max)(yhi, y);
-            }
-        }
-        if(!(ylo <= yhi))
+        double ylo, yhi;
+        if(!triangle_slab_range(t, double(c) - slack, double(c + 1) + slack, ylo, yhi))
           continue;
         bottom[c] = (std::min)(bottom[c], static_cast<long>(std::floor(ylo - slack)));
         top[c] = (std::max)(top[c], static_cast<long>(std::floor(yhi + slack)) + 1);

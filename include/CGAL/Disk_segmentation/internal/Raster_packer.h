@@ -111,14 +111,8 @@ public:
   // they do not fit in the square.
   bool run(const std::vector<Profile_chart>& charts, double scale, std::vector<Profile_placement>& out)
   {
-    const std::size_t count = charts.size();
-    out.assign(count, Profile_placement());
-    std::vector<std::size_t> order(count);
-    std::iota(order.begin(), order.end(), std::size_t(0));
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      return charts[a].density * charts[a].density * charts[a].area >
-             charts[b].density * charts[b].density * charts[b].area;
-    });
+    out.assign(charts.size(), Profile_placement());
+    const std::vector<std::size_t> order = largest_first(charts);
     atlas_.reset(rows_, n_);
     longest_free_.assign(rows_, static_cast<long>(n_));
     occupied_run_.assign(rows_ * n_, 0);
@@ -414,36 +408,18 @@ private:
   }
 
   // Marks every cell the triangle touches: per row, the x-range of the
-  // triangle over the row's slab (its corners inside the slab and its
-  // edges' crossings of the slab's two sides).
+  // triangle over the row's slab.
   void mark_triangle(const Packing_point* t, long rows, long columns)
   {
+    const Packing_point transposed[3] = { { t[0].y, t[0].x }, { t[1].y, t[1].x }, { t[2].y, t[2].x } };
     const double ymin = (std::min)(t[0].y, (std::min)(t[1].y, t[2].y));
     const double ymax = (std::max)(t[0].y, (std::max)(t[1].y, t[2].y));
     const long r0 = (std::max)(0L, static_cast<long>(std::floor(ymin - slack)));
     const long r1 = (std::min)(rows - 1, static_cast<long>(std::floor(ymax + slack)));
     for(long r = r0; r <= r1; ++r)
     {
-      const double low = double(r) - slack, high = double(r + 1) + slack;
-      double xlo = std::numeric_limits<double>::infinity(), xhi = -xlo;
-      for(int j = 0; j < 3; ++j)
-      {
-        const Packing_point& a = t[j];
-        const Packing_point& b = t[(j + 1) % 3];
-        if(a.y >= low && a.y <= high)
-        {
-          xlo = (std::min)(xlo, a.x);
-          xhi = (std::max)(xhi, a.x);
-        }
-        for(double side_y : { low, high })
-          if((a.y - side_y) * (b.y - side_y) < 0)
-          {
-            const double x = a.x + (b.x - a.x) * (side_y - a.y) / (b.y - a.y);
-            xlo = (std::min)(xlo, x);
-            xhi = (std::max)(xhi, x);
-          }
-      }
-      if(!(xlo <= xhi))
+      double xlo, xhi;
+      if(!triangle_slab_range(transposed, double(r) - slack, double(r + 1) + slack, xlo, xhi))
         continue;
       const long c0 = (std::max)(0L, static_cast<long>(std::floor(xlo - slack)));
       const long c1 = (std::min)(columns - 1, static_cast<long>(std::floor(xhi + slack)));

@@ -169,6 +169,33 @@ struct Frame_extents
 
 inline Packing_point quarter_turn(const Packing_point& u) { return { -u.y, u.x }; }
 
+// The range [lo, hi] of the y-coordinates of triangle t over the slab
+// left <= x <= right: its corners inside the slab and its edges' crossings
+// of the slab's two sides. Returns false if the triangle misses the slab.
+inline bool triangle_slab_range(const Packing_point* t, double left, double right, double& lo, double& hi)
+{
+  lo = std::numeric_limits<double>::infinity();
+  hi = -lo;
+  for(int j = 0; j < 3; ++j)
+  {
+    const Packing_point& a = t[j];
+    const Packing_point& b = t[(j + 1) % 3];
+    if(a.x >= left && a.x <= right)
+    {
+      lo = (std::min)(lo, a.y);
+      hi = (std::max)(hi, a.y);
+    }
+    for(double side : { left, right })
+      if((a.x - side) * (b.x - side) < 0)
+      {
+        const double y = a.y + (b.y - a.y) * (side - a.x) / (b.x - a.x);
+        lo = (std::min)(lo, y);
+        hi = (std::max)(hi, y);
+      }
+  }
+  return lo <= hi;
+}
+
 // An eighth of a turn counterclockwise, as Packing_rotation::eighth_turned().
 inline Packing_point eighth_turn(const Packing_point& u)
 {
