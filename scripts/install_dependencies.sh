@@ -9,7 +9,7 @@ packages=(
   libcgal-dev libeigen3-dev libboost-dev libtbb-dev libgmp-dev libmpfr-dev
   libgtest-dev libbenchmark-dev
   libcli11-dev nlohmann-json3-dev libtinygltf-dev libstb-dev pkg-config
-  doxygen graphviz
+  doxygen graphviz libjs-mathjax
   "$@"
 )
 

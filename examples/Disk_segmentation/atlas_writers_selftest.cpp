@@ -1,11 +1,13 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Self-test of atlas_writers.h: writes the OBJ, GLB and PNG atlas of a small
+// Self-test of the atlas writers (CGAL/Disk_segmentation/IO/): writes the OBJ, GLB and PNG atlas of a small
 // hand-made mesh and reads them back. Exits with 0 when every check passes;
 // its last line is "atlas_writers: N passed, M failed".
 
-#include "atlas_writers.h"
+#include <CGAL/Disk_segmentation/IO/write_atlas_GLB.h>
+#include <CGAL/Disk_segmentation/IO/write_atlas_OBJ.h>
+#include <CGAL/Disk_segmentation/IO/write_atlas_PNG.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -450,15 +452,15 @@ void test_png(const Test_mesh& t, const std::string& path, int resolution)
   check(at(0.01, 0.01) == white && at(0.99, 0.99) == white && at(0.5, 0.5) == white,
         "PNG: white outside the charts");
   check(at(0.75, 0.3) == red && at(0.62, 0.8) == red, "PNG: flipped chart 1 is red");
-  check(at(0.25, 0.3) == disk_uv::chart_color(0) && at(0.3, 0.8) == disk_uv::chart_color(0),
+  check(at(0.25, 0.3) == CGAL::Disk_segmentation::IO::chart_color(0) && at(0.3, 0.8) == CGAL::Disk_segmentation::IO::chart_color(0),
         "PNG: chart 0 has its color");
-  check(disk_uv::chart_color(0) != white && disk_uv::chart_color(0) != red && disk_uv::chart_color(1) != red &&
-          disk_uv::chart_color(0) != disk_uv::chart_color(1),
+  check(CGAL::Disk_segmentation::IO::chart_color(0) != white && CGAL::Disk_segmentation::IO::chart_color(0) != red && CGAL::Disk_segmentation::IO::chart_color(1) != red &&
+          CGAL::Disk_segmentation::IO::chart_color(0) != CGAL::Disk_segmentation::IO::chart_color(1),
         "PNG: chart colors differ from each other, white and red");
   check(at(0.05, 0.5) == dark && at(0.45, 0.3) == dark && at(0.25, 0.05) == dark,
         "PNG: chart 0 borders (boundary and seam) are dark lines");
   // Vertical line u = 1/3 of the 3D grid is inside chart 0: no border there.
-  check(at(0.25, 0.5) == disk_uv::chart_color(0), "PNG: no line across the inside of a chart");
+  check(at(0.25, 0.5) == CGAL::Disk_segmentation::IO::chart_color(0), "PNG: no line across the inside of a chart");
   (void)t;
   stbi_image_free(pixels);
 }
@@ -487,14 +489,14 @@ int main()
   const std::string obj_path = folder + "/atlas.obj", glb_path = folder + "/atlas.glb",
                     png_path = folder + "/atlas.png";
   files.insert(files.end(), { obj_path, glb_path, png_path });
-  check(write_file(obj_path, [&](std::ostream& out) { disk_uv::write_obj(out, t.mesh, t.patch, t.uv); }),
+  check(write_file(obj_path, [&](std::ostream& out) { CGAL::Disk_segmentation::IO::write_atlas_OBJ(out, t.mesh, t.patch, t.uv); }),
         "OBJ: writes");
   test_obj(t, obj_path, 12);
-  check(write_file(glb_path, [&](std::ostream& out) { disk_uv::write_glb(out, t.mesh, t.patch, t.uv); }),
+  check(write_file(glb_path, [&](std::ostream& out) { CGAL::Disk_segmentation::IO::write_atlas_GLB(out, t.mesh, t.patch, t.uv); }),
         "GLB: writes");
   test_glb(t, glb_path, 12);
   const int resolution = 64;
-  check(write_file(png_path, [&](std::ostream& out) { disk_uv::write_atlas_png(out, t.mesh, t.patch, t.uv, resolution); }),
+  check(write_file(png_path, [&](std::ostream& out) { CGAL::Disk_segmentation::IO::write_atlas_PNG(out, t.mesh, t.patch, t.uv, resolution); }),
         "PNG: writes");
   test_png(t, png_path, resolution);
 
@@ -502,7 +504,7 @@ int main()
   {
     std::ostringstream out;
     out.precision(4);
-    disk_uv::write_obj(out, t.mesh, t.patch, t.uv);
+    CGAL::Disk_segmentation::IO::write_atlas_OBJ(out, t.mesh, t.patch, t.uv);
     out.str("");
     out << 1.0 / 3.0;
     check(out.str() == "0.3333", "OBJ: the stream's precision is restored");
@@ -518,10 +520,10 @@ int main()
     u.uv[h] = Point_2(u.uv[h].x() + 0.001, u.uv[h].y());
     const std::string path = folder + "/discontinuous.obj", glb = folder + "/discontinuous.glb";
     files.insert(files.end(), { path, glb });
-    check(write_file(path, [&](std::ostream& out) { disk_uv::write_obj(out, u.mesh, u.patch, u.uv); }),
+    check(write_file(path, [&](std::ostream& out) { CGAL::Disk_segmentation::IO::write_atlas_OBJ(out, u.mesh, u.patch, u.uv); }),
           "OBJ (discontinuous UVs): writes");
     test_obj(u, path, 13);
-    check(write_file(glb, [&](std::ostream& out) { disk_uv::write_glb(out, u.mesh, u.patch, u.uv); }),
+    check(write_file(glb, [&](std::ostream& out) { CGAL::Disk_segmentation::IO::write_atlas_GLB(out, u.mesh, u.patch, u.uv); }),
           "GLB (discontinuous UVs): writes");
     test_glb(u, glb, 13);
   }
@@ -533,15 +535,15 @@ int main()
     UV_map uv = empty.add_property_map<Halfedge_index, Point_2>("h:uv", Point_2(0, 0)).first;
     std::ostringstream out;
     bool threw = false;
-    try { disk_uv::write_glb(out, empty, patch, uv); }
-    catch(const std::runtime_error&) { threw = true; }
-    check(threw, "GLB: an empty mesh throws std::runtime_error");
+    try { CGAL::Disk_segmentation::IO::write_atlas_GLB(out, empty, patch, uv); }
+    catch(const CGAL::Disk_segmentation::Input_error&) { threw = true; }
+    check(threw, "GLB: an empty mesh throws Input_error");
     threw = false;
-    try { disk_uv::write_atlas_png(out, t.mesh, t.patch, t.uv, 0); }
-    catch(const std::runtime_error&) { threw = true; }
-    check(threw, "PNG: resolution 0 throws std::runtime_error");
+    try { CGAL::Disk_segmentation::IO::write_atlas_PNG(out, t.mesh, t.patch, t.uv, 0); }
+    catch(const CGAL::Disk_segmentation::Input_error&) { threw = true; }
+    check(threw, "PNG: resolution 0 throws Input_error");
     std::ostringstream png;
-    disk_uv::write_atlas_png(png, empty, patch, uv, 8);
+    CGAL::Disk_segmentation::IO::write_atlas_PNG(png, empty, patch, uv, 8);
     check(png.str().compare(1, 3, "PNG") == 0, "PNG: an empty mesh gives a white picture");
   }
 

@@ -24,7 +24,9 @@
 // checked before any work, and the outputs replace their files only once
 // all were written (output_files.h): a failed run changes no file.
 
-#include "atlas_writers.h"
+#include <CGAL/Disk_segmentation/IO/write_atlas_GLB.h>
+#include <CGAL/Disk_segmentation/IO/write_atlas_OBJ.h>
+#include <CGAL/Disk_segmentation/IO/write_atlas_PNG.h>
 #include "mesh_io.h"
 #include "output_files.h"
 
@@ -69,7 +71,7 @@ void write_colored_ply(std::ostream& out, const Mesh& mesh, const Patch_map& pat
     out << 3;
     for(Mesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
       out << ' ' << std::size_t(v);
-    const std::array<unsigned char, 3> c = disk_uv::chart_color(patch[f]);
+    const std::array<unsigned char, 3> c = CGAL::Disk_segmentation::IO::chart_color(patch[f]);
     out << ' ' << int(c[0]) << ' ' << int(c[1]) << ' ' << int(c[2]) << '\n';
   }
 }
@@ -247,9 +249,9 @@ int main(int argc, char** argv)
   Progress_display display(!quiet && ::isatty(2));
   try
   {
-    if(!png_path.empty() && (resolution == 0 || resolution > disk_uv::max_atlas_png_resolution))
+    if(!png_path.empty() && (resolution == 0 || resolution > CGAL::Disk_segmentation::IO::max_atlas_png_resolution))
       throw disk_uv::Tool_error("--atlas-png needs --resolution between 1 and " +
-                                std::to_string(disk_uv::max_atlas_png_resolution) + ", not " +
+                                std::to_string(CGAL::Disk_segmentation::IO::max_atlas_png_resolution) + ", not " +
                                 std::to_string(resolution));
     // Every output is checked before any work, written at the end.
     disk_uv::Output_files outputs;
@@ -266,10 +268,10 @@ int main(int argc, char** argv)
       outputs.add(option, path, input);
       writers.push_back(std::move(writer));
     };
-    add_output("-o", obj_path, [&](std::ostream& o) { disk_uv::write_obj(o, mesh, patch, uv); });
-    add_output("--glb", glb_path, [&](std::ostream& o) { disk_uv::write_glb(o, mesh, patch, uv); });
+    add_output("-o", obj_path, [&](std::ostream& o) { CGAL::Disk_segmentation::IO::write_atlas_OBJ(o, mesh, patch, uv); });
+    add_output("--glb", glb_path, [&](std::ostream& o) { CGAL::Disk_segmentation::IO::write_atlas_GLB(o, mesh, patch, uv); });
     add_output("--atlas-png", png_path,
-               [&](std::ostream& o) { disk_uv::write_atlas_png(o, mesh, patch, uv, resolution); });
+               [&](std::ostream& o) { CGAL::Disk_segmentation::IO::write_atlas_PNG(o, mesh, patch, uv, resolution); });
     add_output("--patch-ids", patch_ids_path, [&](std::ostream& o) { write_patch_ids(o, mesh, patch); });
     add_output("--colored", colored_path, [&](std::ostream& o) { write_colored_ply(o, mesh, patch); });
     add_output("--report", report_path, [&](std::ostream& o) {

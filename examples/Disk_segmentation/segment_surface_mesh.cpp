@@ -4,7 +4,9 @@
 // Segments a Surface_mesh into topological disks, step by step, and checks
 // every patch with is_topological_disk().
 
-#include <CGAL/Disk_segmentation.h>
+#include <CGAL/Disk_segmentation/patch_faces.h>
+#include <CGAL/Disk_segmentation/segment_into_disks.h>
+#include <CGAL/Disk_segmentation/topology.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
@@ -40,9 +42,12 @@ int main(int argc, char** argv)
   count = DS::merge_disk_regions(mesh, patch, DS::parameters::merge_threshold(DS::regular_polygon_threshold(5)));
   std::cout << count << " disks after merging\n";
 
-  std::vector<std::vector<Mesh::Face_index> > faces_of(count);
-  for(Mesh::Face_index f : faces(mesh))
-    faces_of[patch[f]].push_back(f);
+  const std::vector<std::vector<Mesh::Face_index> > faces_of = DS::patch_faces(mesh, patch);
+  if(faces_of.size() != count)
+  {
+    std::cerr << "patch ids are not 0.." << count - 1 << std::endl;
+    return 1;
+  }
   for(const auto& p : faces_of)
     if(!DS::is_topological_disk(p, mesh))
     {

@@ -11,11 +11,15 @@
 // UVs are per corner: uv[h] is the UV of target(h) as seen from face(h).
 // Both atlases are checked: every chart is a topological disk, every UV lies
 // in the unit square, every triangle keeps a positive (counterclockwise) area.
+// With a second argument, the first atlas is saved there as an OBJ file
+// (a `vt` per corner, one group per chart).
 
 #include <CGAL/Disk_segmentation.h>
+#include <CGAL/Disk_segmentation/IO/write_atlas_OBJ.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <fstream>
 #include <iostream>
 #include <vector>
 
@@ -53,7 +57,7 @@ int main(int argc, char** argv)
   Mesh mesh;
   if(argc < 2 || !CGAL::IO::read_polygon_mesh(argv[1], mesh))
   {
-    std::cerr << "usage: uv_atlas_example MESH (a triangle mesh)" << std::endl;
+    std::cerr << "usage: uv_atlas_example MESH [ATLAS.obj] (a triangle mesh)" << std::endl;
     return 1;
   }
 
@@ -73,6 +77,16 @@ int main(int argc, char** argv)
   {
     std::cerr << "uv_atlas gave an invalid atlas" << std::endl;
     return 1;
+  }
+  if(argc > 2)
+  {
+    std::ofstream out(argv[2]);
+    if(!DS::IO::write_atlas_OBJ(out, mesh, chart, uv) || !out.flush())
+    {
+      std::cerr << "cannot write " << argv[2] << std::endl;
+      return 1;
+    }
+    std::cout << "atlas written to " << argv[2] << "\n";
   }
 
   // 2. The same steps by hand.

@@ -18,6 +18,7 @@
 #include <CGAL/Disk_segmentation/Distortion_bound.h>
 #include <CGAL/Disk_segmentation/parameterize_patches.h>
 #include <CGAL/Disk_segmentation/pack_patches.h>
+#include <CGAL/Disk_segmentation/patch_faces.h>
 #include <CGAL/Disk_segmentation/uv_atlas.h>
 #include <CGAL/Disk_segmentation/atlas_quality.h>
 

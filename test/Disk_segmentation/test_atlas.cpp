@@ -598,6 +598,48 @@ TEST(Atlas, PinchedVerticesAreCutNotRejected)
   }
 }
 
+TEST(Parameters, ChainsGiveTheSameAtlasInEitherOrder)
+{
+  // Every parameter of uv_atlas, then the same chain reversed: the named
+  // parameters are looked up by tag, so the order cannot matter.
+  Mesh a = load("eight.off"), b = load("eight.off");
+  UV_map uv_a = a.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:uv").first;
+  UV_map uv_b = b.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:uv").first;
+  auto patch_a = a.add_property_map<Mesh::Face_index, std::size_t>("f:patch", 0).first;
+  auto patch_b = b.add_property_map<Mesh::Face_index, std::size_t>("f:patch", 0).first;
+  std::size_t calls_a = 0, calls_b = 0;
+  const DS::Atlas_report ra = DS::uv_atlas(a, uv_a,
+    DS::parameters::vertex_point_map(a.points()).geom_traits(K()).face_patch_map(patch_a)
+      .number_of_seeds(7).number_of_subsamples(4).merge_threshold(0.6).random_seed(5u)
+      .parameterization_method(DS::Parameterization_method::ARAP).use_fallback(true)
+      .max_angle_distortion(0.08).max_area_distortion(0.15).max_stretch(8.).max_area_scale(8.)
+      .max_stretch_p95(1.3).max_chart_faces(5000u).number_of_threads(1u).smooth_borders(true)
+      .merge_charts(true).packing_method(DS::Packing_method::TIGHT).texture_resolution(512u)
+      .padding_in_texels(3.).progress_callback([&](const std::string&, std::size_t, std::size_t) { ++calls_a; }));
+  const DS::Atlas_report rb = DS::uv_atlas(b, uv_b,
+    DS::parameters::progress_callback([&](const std::string&, std::size_t, std::size_t) { ++calls_b; })
+      .padding_in_texels(3.).texture_resolution(512u).packing_method(DS::Packing_method::TIGHT)
+      .merge_charts(true).smooth_borders(true).number_of_threads(1u).max_chart_faces(5000u)
+      .max_stretch_p95(1.3).max_area_scale(8.).max_stretch(8.).max_area_distortion(0.15)
+      .max_angle_distortion(0.08).use_fallback(true).parameterization_method(DS::Parameterization_method::ARAP)
+      .random_seed(5u).merge_threshold(0.6).number_of_subsamples(4).number_of_seeds(7)
+      .face_patch_map(patch_b).geom_traits(K()).vertex_point_map(b.points()));
+  EXPECT_EQ(ra.number_of_voronoi_cells, 7u);
+  EXPECT_EQ(rb.number_of_voronoi_cells, 7u);
+  EXPECT_EQ(ra.number_of_charts, rb.number_of_charts);
+  EXPECT_GT(calls_a, 0u);
+  EXPECT_EQ(calls_a, calls_b);
+  for(Mesh::Face_index f : a.faces())
+    ASSERT_EQ(patch_a[f], patch_b[f]);
+  for(Mesh::Halfedge_index h : a.halfedges())
+    ASSERT_EQ(uv_a[h], uv_b[h]);
+  // The parameters are read, not only accepted: another seed count changes the cells.
+  Mesh c = load("eight.off");
+  UV_map uv_c = c.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:uv").first;
+  EXPECT_EQ(DS::uv_atlas(c, uv_c, DS::parameters::number_of_threads(1u).number_of_seeds(3)).number_of_voronoi_cells,
+            3u);
+}
+
 TEST(Atlas, BadParametersAreRejectedBeforeAnythingIsWritten)
 {
   Mesh tm = load("eight.off");
@@ -605,6 +647,25 @@ TEST(Atlas, BadParametersAreRejectedBeforeAnythingIsWritten)
   EXPECT_THROW(DS::uv_atlas(tm, uv, DS::parameters::texture_resolution(0u)), DS::Input_error);
   EXPECT_THROW(DS::uv_atlas(tm, uv, DS::parameters::padding_in_texels(-1.)), DS::Input_error);
   EXPECT_THROW(DS::uv_atlas(tm, uv, DS::parameters::number_of_seeds(0)), DS::Input_error);
+  // Negative counts used to wrap around to huge ones (-3 seeds: 634 charts).
+  const auto negative = [&](const auto& np, const char* name) {
+    try
+    {
+      DS::uv_atlas(tm, uv, np);
+      ADD_FAILURE() << name << ": no exception";
+    }
+    catch(const DS::Input_error& e)
+    {
+      const std::string message = e.what();
+      EXPECT_NE(message.find(name), std::string::npos) << message;
+      EXPECT_NE(message.find("negative"), std::string::npos) << message;
+    }
+  };
+  negative(DS::parameters::number_of_seeds(-3), "number_of_seeds");
+  negative(DS::parameters::number_of_subsamples(-1), "number_of_subsamples");
+  negative(DS::parameters::texture_resolution(-5), "texture_resolution");
+  negative(DS::parameters::number_of_threads(-2), "number_of_threads");
+  negative(DS::parameters::max_chart_faces(-1L), "max_chart_faces");
   for(Mesh::Halfedge_index h : tm.halfedges())
     ASSERT_EQ(uv[h], K::Point_2(7, 7));
   EXPECT_THROW(DS::parameterization_method_from_string("harmonic?"), DS::Input_error);

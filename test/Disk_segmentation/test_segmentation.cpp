@@ -6,6 +6,8 @@
 #include "test_meshes.h"
 
 #include <CGAL/Disk_segmentation.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Surface_mesh.h>
@@ -14,6 +16,7 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -427,6 +430,10 @@ TEST(Parameters, RegularPolygonThreshold)
   EXPECT_NEAR(DS::regular_polygon_threshold(5), 0.7624, 1e-4);
   const double side = 1.0, area_triangle = std::sqrt(3.) / 4.;
   EXPECT_NEAR(DS::regular_polygon_threshold(3), side / std::sqrt(area_triangle), 1e-12);
+  // Fewer than 3 sides is no polygon, in release builds too (NDEBUG or not).
+  for(int n : { 2, 0, -1 })
+    EXPECT_THROW(DS::regular_polygon_threshold(n), DS::Input_error) << n;
+  EXPECT_THROW(DS::regular_polygon_threshold(2u), DS::Input_error);
 }
 
 // ---------------------------------------------------------------------------
@@ -546,6 +553,13 @@ TEST(Errors, ParametersOutOfRange)
   for(std::size_t k : { std::size_t(0), std::size_t(1) })
     EXPECT_NE(error_of([&] { DS::refine_to_topological_disks(tm, p.map, DS::parameters::number_of_subsamples(k)); })
                 .find("number_of_subsamples"), std::string::npos);
+  // Negative counts are named, not wrapped around to huge ones.
+  EXPECT_NE(error_of([&] { DS::voronoi_fps_segmentation(tm, p.map, DS::parameters::number_of_seeds(-3)); })
+              .find("number_of_seeds must not be negative"), std::string::npos);
+  EXPECT_NE(error_of([&] { DS::segment_into_disks(tm, p.map, DS::parameters::number_of_seeds(-3)); })
+              .find("number_of_seeds must not be negative"), std::string::npos);
+  EXPECT_NE(error_of([&] { DS::refine_to_topological_disks(tm, p.map, DS::parameters::number_of_subsamples(-2)); })
+              .find("number_of_subsamples must not be negative"), std::string::npos);
   for(double eps : { -0.1, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity() })
     EXPECT_NE(error_of([&] { DS::segment_into_disks(tm, p.map, DS::parameters::merge_threshold(eps)); })
                 .find("merge_threshold"), std::string::npos);
@@ -555,6 +569,69 @@ TEST(Errors, ParametersOutOfRange)
   Mesh::Face_index foreign(static_cast<Mesh::size_type>(num_faces(other) + 5));
   EXPECT_NE(error_of([&] { DS::voronoi_fps_segmentation(tm, p.map, DS::parameters::first_seed(foreign)); })
               .find("first_seed"), std::string::npos);
+}
+
+TEST(Segmentation, PatchFacesListsEveryFaceOnceUnderItsId)
+{
+  const Mesh tm = make<Mesh>(TS::uv_sphere(8, 12));
+  Patches<Mesh> p(tm);
+  const std::size_t count = DS::segment_into_disks(tm, p.map, DS::parameters::number_of_seeds(6));
+  const auto lists = DS::patch_faces(tm, p.map);
+  ASSERT_EQ(lists.size(), count);
+  // Every face in exactly one list, the one of its id, in faces(tm) order.
+  std::vector<std::size_t> seen(num_faces(tm), 0);
+  for(std::size_t id = 0; id < lists.size(); ++id)
+  {
+    EXPECT_FALSE(lists[id].empty()) << id;
+    for(std::size_t k = 0; k < lists[id].size(); ++k)
+    {
+      const Mesh::Face_index f = lists[id][k];
+      EXPECT_EQ(get(p.map, f), id);
+      ++seen[f.idx()];
+      if(k > 0)
+        EXPECT_LT(lists[id][k - 1].idx(), f.idx());
+    }
+  }
+  for(std::size_t f = 0; f < seen.size(); ++f)
+    EXPECT_EQ(seen[f], 1u) << f;
+
+  // A gap in the ids gives an empty list; a negative id is an error.
+  std::map<Mesh::Face_index, int> ids;
+  for(auto f : faces(tm))
+    ids[f] = 2;
+  const auto gap = DS::patch_faces(tm, boost::make_assoc_property_map(ids));
+  ASSERT_EQ(gap.size(), 3u);
+  EXPECT_TRUE(gap[0].empty() && gap[1].empty());
+  EXPECT_EQ(gap[2].size(), num_faces(tm));
+  ids[*faces(tm).begin()] = -1;
+  EXPECT_NE(error_of([&] { DS::patch_faces(tm, boost::make_assoc_property_map(ids)); }).find("negative patch id"),
+            std::string::npos);
+}
+
+TEST(Segmentation, SurfaceMeshWithGarbageIsHandled)
+{
+  // Faces removed without collect_garbage() stay in the Surface_mesh as
+  // garbage; the package skips them, so the result equals the one on a
+  // copy without garbage and with the same face and vertex orders
+  // (copy_face_graph; collect_garbage() may reorder them), face for face.
+  Mesh tm = make<Mesh>(TS::uv_sphere(10, 16));
+  std::size_t k = 0;
+  for(Mesh::Face_index f : tm.faces())
+    if(k++ % 9 == 4)
+      CGAL::Euler::remove_face(tm.halfedge(f), tm);
+  ASSERT_TRUE(tm.has_garbage());
+  Mesh compact;
+  CGAL::copy_face_graph(tm, compact);
+  ASSERT_FALSE(compact.has_garbage());
+  // num_faces() of a Surface_mesh counts removed faces too; faces() skips them.
+  ASSERT_EQ(compact.number_of_faces(), tm.number_of_faces());
+
+  Patches<Mesh> p(tm), q(compact);
+  const std::size_t n = DS::segment_into_disks(tm, p.map, DS::parameters::number_of_seeds(5));
+  EXPECT_EQ(DS::segment_into_disks(compact, q.map, DS::parameters::number_of_seeds(5)), n);
+  EXPECT_EQ(p.ids(tm), q.ids(compact));
+  const TS::Partition_report r = TS::check_disk_partition(tm, p.map);
+  EXPECT_TRUE(r.ok) << r.problem;
 }
 
 TEST(Errors, MergeRefusesRegionsThatAreNotDisks)

@@ -21,8 +21,9 @@ enum class Parameterization_method
   DISCRETE_CONFORMAL,
   /// Least squares conformal map, free border (two pinned vertices).
   LSCM,
-  /// As-rigid-as-possible (Liu et al. 2008), free border: from the mean
-  /// value map, up to ten local/global iterations with a cotangent Laplacian
+  /// As-rigid-as-possible (Liu et al.\ 2008), free border: from the
+  /// free-border LSCM map (from the mean value map, or Tutte's, when that
+  /// fails), up to ten local/global iterations with a cotangent Laplacian
   /// factored once, each kept only if the chart stays valid.
   ARAP,
   /// Mean value coordinates, border fixed on a circle: injective by construction.
@@ -33,7 +34,7 @@ enum class Parameterization_method
 
 /// \ingroup PkgDiskSegmentationRef
 /// The short name of a method, as the command-line tool spells it:
-/// `conformal`, `lscm`, `arap`, `mvc`, `tutte`.
+/// `conformal`, `lscm`, `arap`, `mvc`, `tutte`. Constant time and memory.
 inline std::string to_string(Parameterization_method m)
 {
   switch(m)
@@ -49,6 +50,7 @@ inline std::string to_string(Parameterization_method m)
 
 /// \ingroup PkgDiskSegmentationRef
 /// The method named `name` (see `to_string()`); throws `Input_error` for an unknown name.
+/// Time and memory linear in the length of `name`.
 inline Parameterization_method parameterization_method_from_string(const std::string& name)
 {
   for(Parameterization_method m : { Parameterization_method::DISCRETE_CONFORMAL, Parameterization_method::LSCM,

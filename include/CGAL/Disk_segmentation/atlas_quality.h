@@ -10,6 +10,7 @@
 #include <CGAL/Disk_segmentation/parameters.h>
 #include <CGAL/Disk_segmentation/internal/Face_partition.h>
 #include <CGAL/Disk_segmentation/internal/Indexed_triangle_mesh.h>
+#include <CGAL/Disk_segmentation/internal/Parameter_checks.h>
 #include <CGAL/Disk_segmentation/internal/Triangle_distortion.h>
 
 #include <CGAL/boost/graph/iterator.h>
@@ -39,9 +40,9 @@ struct Distortion_statistics
 };
 
 /// \ingroup PkgDiskSegmentationRef
-/// The quality of a UV atlas, as defined in the package's METRICS notes,
-/// which follow the benchmark of Shay, Solomon and Stein (2022) used by the
-/// paper (Tables 1 and 2).
+/// The quality of a UV atlas, with the measures of the benchmark of Shay,
+/// Solomon and Stein (2022) that the paper uses (Tables 1 and 2), and their
+/// log variants (see \ref DS_Quality in the user manual).
 ///
 /// For every face, the Jacobian \f$ J_f \f$ of its linear map from 3D to UV
 /// (3D triangle laid in an orthonormal frame of its plane) has singular
@@ -219,7 +220,7 @@ inline std::size_t count_texel_overlaps(const std::vector<std::array<std::array<
 ///         point type as value type (per-corner UVs, see `parameterize_patches()`)
 /// @tparam FacePatchMap a model of `ReadablePropertyMap` with `face_descriptor` as key type and an
 ///         integral value type (chart ids)
-/// @tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+/// @tparam NamedParameters a sequence of \ref PkgDiskSegmentationNamedParameters "Named Parameters"
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{texture_resolution}
@@ -235,7 +236,11 @@ inline std::size_t count_texel_overlaps(const std::vector<std::array<std::array<
 /// @throws Input_error on a bad mesh (see `voronoi_fps_segmentation()`); non-finite UVs are not
 ///         an exception but a failed measurement (`Atlas_quality::failed`).
 ///
-/// Time \f$ O(F \log F) \f$ plus the texels covered by the UV triangles.
+/// Complexity, for `F` faces, `V` vertices and a texture of side `r`
+/// (`texture_resolution`): \f$ O(F \log F + V) \f$ time plus \f$ O(r^2) \f$
+/// and the texels covered by the UV triangles for the overlap count; memory
+/// \f$ O(F + V + r^2) \f$ (one byte per texel). UVs and coordinates are
+/// converted to `double` whatever the kernel.
 template <typename TriangleMesh, typename UVMap, typename FacePatchMap,
           typename NamedParameters = parameters::Default_named_parameters>
 Atlas_quality atlas_quality(const TriangleMesh& tm, UVMap uv_map, FacePatchMap face_patch_map,
@@ -248,8 +253,14 @@ Atlas_quality atlas_quality(const TriangleMesh& tm, UVMap uv_map, FacePatchMap f
   using internal::Index;
   using internal::no_index;
 
-  const unsigned int resolution =
-    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::texture_resolution), 1024u);
+  static_assert(internal::Check_patch_map<FacePatchMap>::value, "");
+  static_assert(internal::Check_named_parameters<NamedParameters>::value, "");
+  const std::size_t resolution = internal::count_parameter(
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::texture_resolution), 1024u),
+    "texture_resolution");
+  if(resolution > (std::size_t(1) << 16))
+    throw Input_error("atlas_quality: texture_resolution (" + std::to_string(resolution) +
+                      ") is above 65536; the overlap count needs resolution^2 bytes");
 
   Atlas_quality q;
   internal::Indexed_triangle_mesh m;
@@ -426,7 +437,7 @@ Atlas_quality atlas_quality(const TriangleMesh& tm, UVMap uv_map, FacePatchMap f
   q.seam_length = seam / m.normalization_scale;  // back to the input's units
 
   if(resolution > 0)
-    q.texel_overlaps = internal::count_texel_overlaps(uv, resolution);
+    q.texel_overlaps = internal::count_texel_overlaps(uv, static_cast<unsigned int>(resolution));
   return q;
 }
 

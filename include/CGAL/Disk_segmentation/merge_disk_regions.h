@@ -12,6 +12,7 @@
 #include <CGAL/Disk_segmentation/internal/Disk_region_merger.h>
 #include <CGAL/Disk_segmentation/internal/Face_partition.h>
 #include <CGAL/Disk_segmentation/internal/Indexed_triangle_mesh.h>
+#include <CGAL/Disk_segmentation/internal/Parameter_checks.h>
 #include <CGAL/Disk_segmentation/internal/Region_topology.h>
 
 #include <CGAL/assertions.h>
@@ -21,6 +22,7 @@
 
 #include <cmath>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -28,14 +30,21 @@ namespace Disk_segmentation {
 
 /// \ingroup PkgDiskSegmentationRef
 /// The paper's threshold \f$ \epsilon_N = 2 / \sqrt{N \cot(\pi / N)} \f$
-/// (its Eq. 5): one side of a regular `N`-gon over the square root of its
-/// area, i.e. the merge score of a regular `N`-gon and a smaller neighbor
+/// (its Equation 5): one side of a regular `N`-gon over the square root of its
+/// area, i.e.\ the merge score of a regular `N`-gon and a smaller neighbor
 /// sharing one full side. `regular_polygon_threshold(5)` (about 0.7624) is
-/// the default of `merge_disk_regions()`.
-inline double regular_polygon_threshold(unsigned int N)
+/// the default of `merge_disk_regions()`. Constant time and memory.
+///
+/// @throws Input_error if `N < 3`, in release builds too.
+template <typename Integer>
+double regular_polygon_threshold(Integer N)
 {
-  CGAL_precondition(N >= 3);
-  return 2. / std::sqrt(N / std::tan(CGAL_PI / N));
+  static_assert(std::is_integral<Integer>::value && !std::is_same<Integer, bool>::value,
+                "CGAL::Disk_segmentation::regular_polygon_threshold() takes an integer number of sides");
+  if(!(N >= 3))
+    throw Input_error("regular_polygon_threshold: a polygon has at least 3 sides (got " + std::to_string(N) + ")");
+  const double n = static_cast<double>(N);
+  return 2. / std::sqrt(n / std::tan(CGAL_PI / n));
 }
 
 namespace internal {
@@ -108,12 +117,12 @@ Merge_tree* merge_tree_parameter(const NamedParameters& np)
 ///         whose faces are triangles
 /// @tparam FacePatchMap a model of `ReadWritePropertyMap` with
 ///         `face_descriptor` as key type and an integral value type
-/// @tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+/// @tparam NamedParameters a sequence of \ref PkgDiskSegmentationNamedParameters "Named Parameters"
 ///
 /// @param tm a triangle mesh, manifold, without garbage
 /// @param face_patch_map a partition whose regions (faces with equal values)
 ///        are all topological disks; receives the merged partition
-/// @param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+/// @param np an optional sequence of \ref PkgDiskSegmentationNamedParameters "Named Parameters" among the ones listed below
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{merge_threshold}
@@ -134,7 +143,7 @@ Merge_tree* merge_tree_parameter(const NamedParameters& np)
 ///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{geom_traits}
-///     \cgalParamDescription{an instance of a geometric traits class, used to read coordinates}
+///     \cgalParamDescription{an instance of a geometric traits class, used only to read coordinates: they are converted with `CGAL::to_double()` and all computation runs in `double` whatever the kernel}
 ///     \cgalParamType{a model of `Kernel`}
 ///     \cgalParamDefault{a \cgal Kernel deduced from the point type}
 ///   \cgalParamNEnd
@@ -155,12 +164,26 @@ Merge_tree* merge_tree_parameter(const NamedParameters& np)
 /// @throws Input_error as `voronoi_fps_segmentation()` does, if the
 ///         threshold is negative or not finite, or if a region is not a
 ///         topological disk (run `refine_to_topological_disks()` first).
+///
+/// Complexity, for `F` faces, `V` vertices and `R` input regions: expected
+/// \f$ O(F + V) \f$ time to read the mesh, test the regions and build their
+/// adjacency. Merges relabel the faces of the smaller region, \f$ O(F \log F) \f$
+/// time over all merges, and push one candidate per neighbor of the merged
+/// region into a lazy heap. Each of the `C` candidates costs
+/// \f$ O(\log C) \f$ time and, when its two regions have not changed since it
+/// was pushed, a disk test in \f$ O(m \log m + s) \f$ time, for the `m` faces
+/// of the smaller region and the `s` faces around their vertices. `C` is at most the
+/// number of adjacent pairs plus the neighbors of every merged region:
+/// \f$ O(R) \f$ when every region has a bounded number of neighbors.
+/// Memory: \f$ O(F + V + C) \f$.
 template <typename TriangleMesh, typename FacePatchMap,
           typename NamedParameters = parameters::Default_named_parameters>
 std::size_t merge_disk_regions(const TriangleMesh& tm,
                                FacePatchMap face_patch_map,
                                const NamedParameters& np = parameters::default_values())
 {
+  static_assert(internal::Check_patch_map<FacePatchMap>::value, "");
+  static_assert(internal::Check_named_parameters<NamedParameters>::value, "");
   const double threshold = internal::merge_threshold_parameter(np);
 
   internal::Indexed_triangle_mesh m;

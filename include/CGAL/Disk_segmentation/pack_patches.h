@@ -9,6 +9,7 @@
 #include <CGAL/Disk_segmentation/Input_error.h>
 #include <CGAL/Disk_segmentation/parameters.h>
 #include <CGAL/Disk_segmentation/internal/Chart_packer.h>
+#include <CGAL/Disk_segmentation/internal/Parameter_checks.h>
 #include <CGAL/Disk_segmentation/internal/Profile_packer.h>
 #include <CGAL/Disk_segmentation/internal/Raster_packer.h>
 #include <CGAL/Disk_segmentation/internal/Indexed_triangle_mesh.h>
@@ -85,8 +86,9 @@ Packing_settings packing_settings(const NamedParameters& np)
 
   // Read through double so that a negative signed argument is caught rather
   // than wrapped around.
-  s.resolution = static_cast<double>(
-    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::texture_resolution), 1024u));
+  s.resolution = static_cast<double>(count_parameter(
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::texture_resolution), 1024u),
+    "texture_resolution"));
   if(!(s.resolution >= 1.) || !std::isfinite(s.resolution))
     throw Input_error("pack_patches: texture_resolution must be at least 1");
 
@@ -633,7 +635,8 @@ std::vector<Chart_similarity> grid_layout(const Chart_set<TriangleMesh>& charts,
 /// height), scaled to fill its cell less the padding, and centered.
 ///
 /// The result is deterministic: it depends only on the input, in the order of
-/// `faces(tm)`. Time is \f$ O(N \log N) \f$ for `N` UV corners plus, for
+/// `faces(tm)`. Time is \f$ O(N \log N) \f$ for the \f$ N = 3F \f$ UV corners
+/// of the `F` faces plus, for
 /// `TIGHT`, \f$ O(P \log P) \f$ per trial rectangle packing (typically under
 /// ten) and, per trial profile packing (about ten), the cells the charts
 /// cross plus 4 times 512 times the sum of the charts' widths in cells; per
@@ -650,7 +653,7 @@ std::vector<Chart_similarity> grid_layout(const Chart_set<TriangleMesh>& charts,
 ///         `boost::graph_traits<TriangleMesh>::%halfedge_descriptor` as key type
 ///         and a 2D point as value type (with `x()`, `y()` and a constructor
 ///         from two `double`s, e.g. `Kernel::Point_2`)
-/// @tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+/// @tparam NamedParameters a sequence of \ref PkgDiskSegmentationNamedParameters "Named Parameters"
 ///
 /// @param tm a triangle mesh
 /// @param face_patch_map the patch id of every face, contiguous in
@@ -662,7 +665,7 @@ std::vector<Chart_similarity> grid_layout(const Chart_set<TriangleMesh>& charts,
 ///        (counterclockwise); on return they are packed. Each halfedge must
 ///        hold its own value (a map that shares storage between halfedges,
 ///        e.g. one that reads per vertex, would be moved twice).
-/// @param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+/// @param np an optional sequence of \ref PkgDiskSegmentationNamedParameters "Named Parameters" among the ones listed below
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{packing_method}
@@ -688,7 +691,7 @@ std::vector<Chart_similarity> grid_layout(const Chart_set<TriangleMesh>& charts,
 ///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{geom_traits}
-///     \cgalParamDescription{an instance of a geometric traits class, used to read coordinates}
+///     \cgalParamDescription{an instance of a geometric traits class, used only to read coordinates: they are converted with `CGAL::to_double()` and all computation runs in `double` whatever the kernel}
 ///     \cgalParamType{a model of `Kernel`}
 ///     \cgalParamDefault{a \cgal Kernel deduced from the point type}
 ///   \cgalParamNEnd
@@ -712,6 +715,8 @@ Packing_report pack_patches(const TriangleMesh& tm,
                             UVMap uv_map,
                             const NamedParameters& np = parameters::default_values())
 {
+  static_assert(internal::Check_patch_map<FacePatchMap>::value, "");
+  static_assert(internal::Check_named_parameters<NamedParameters>::value, "");
   typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
   typedef typename boost::property_traits<UVMap>::value_type UV_point;
 

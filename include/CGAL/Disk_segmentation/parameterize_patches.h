@@ -20,6 +20,7 @@
 #include <CGAL/Disk_segmentation/internal/Chart_restriction.h>
 #include <CGAL/Disk_segmentation/internal/Face_partition.h>
 #include <CGAL/Disk_segmentation/internal/Indexed_triangle_mesh.h>
+#include <CGAL/Disk_segmentation/internal/Parameter_checks.h>
 #include <CGAL/Disk_segmentation/internal/Progress.h>
 #include <CGAL/Disk_segmentation/internal/Region_topology.h>
 #include <CGAL/Disk_segmentation/internal/Voronoi_fps.h>
@@ -102,20 +103,21 @@ struct Parameterization_report
 
 /// \ingroup PkgDiskSegmentationRef
 /// The method `parameterize_patches()` uses when none is given: ARAP. It
-/// starts from the injective mean value map and keeps only iterates that
-/// stay valid, so it never needs a fallback when mean value coordinates
-/// succeed, and it has the lowest area distortion of all methods (see the
-/// README for the measurements behind this choice).
+/// starts from the free-border LSCM map (from the injective mean value map
+/// when that fails) and keeps only iterates that stay valid, so it never
+/// needs a fallback when mean value coordinates succeed, and it has the
+/// lowest area distortion of all methods (see \ref DS_Parameterization in
+/// the user manual for the measurements behind this choice).
 constexpr Parameterization_method default_parameterization_method = Parameterization_method::ARAP;
 
 /// \ingroup PkgDiskSegmentationRef
 /// The `max_chart_faces` of `parameterize_patches()` when none is given:
-/// patches of more than \f$ 2^{17} \f$ = 131,072 faces are split before
+/// patches of more than \f$ 2^{17} = 131072 \f$ faces are split before
 /// they are parameterized. The time and memory of a chart's sparse
 /// factorization grow faster than its number of faces: on a 2.2M-face mesh
 /// this bound halves the parameterization time and keeps the peak memory of
 /// the whole pipeline at 0.89 GB on one thread (1.06 GB on two), for 3 more
-/// charts than \f$ 2^{18} \f$ (see the benchmark README). With the default
+/// charts than \f$ 2^{18} \f$. With the default
 /// 10 seeds, meshes below about 1M faces rarely have such patches.
 constexpr std::size_t default_max_chart_faces = std::size_t(1) << 17;
 
@@ -163,12 +165,16 @@ Parameterization_settings parameterization_settings(const NamedParameters& np)
                               default_parameterization_method);
   s.use_fallback = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::use_fallback), true);
   s.require_disks = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::require_disk_patches), true);
-  s.threads = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_threads), 0u);
+  s.threads = static_cast<unsigned int>((std::min)(
+    count_parameter(choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_threads), 0u),
+                    "number_of_threads"),
+    std::size_t((std::numeric_limits<unsigned int>::max)())));
   s.bound = distortion_bound_parameters(np);
   s.smooth_borders = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::smooth_borders), true);
   s.merge_charts = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::merge_charts), true);
-  s.max_chart_faces = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::max_chart_faces),
-                                       default_max_chart_faces);
+  s.max_chart_faces = count_parameter(
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::max_chart_faces), default_max_chart_faces),
+    "max_chart_faces");
   if(s.max_chart_faces < 1)
     throw Input_error("max_chart_faces must be >= 1");
   return s;
@@ -832,12 +838,12 @@ Parameterization_report parameterize_patches_with_tree(const TriangleMesh& tm, F
 ///         integral value type; patch ids must be contiguous, `0` to `P - 1`
 /// @tparam UVMap a model of `WritablePropertyMap` with `halfedge_descriptor` as key type and a 2D
 ///         point type (constructible from two `double`) as value type
-/// @tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+/// @tparam NamedParameters a sequence of \ref PkgDiskSegmentationNamedParameters "Named Parameters"
 ///
 /// @param tm a triangle mesh, manifold, without garbage
 /// @param face_patch_map the patches, each a topological disk (see `segment_into_disks()`)
 /// @param uv_map receives the UVs
-/// @param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+/// @param np an optional sequence of \ref PkgDiskSegmentationNamedParameters "Named Parameters" among the ones listed below
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{parameterization_method}
@@ -886,7 +892,7 @@ Parameterization_report parameterize_patches_with_tree(const TriangleMesh& tm, F
 ///     \cgalParamDescription{patches with more faces are split (recursively, in two) before they are
 ///       parameterized, which bounds the memory of each chart's linear systems}
 ///     \cgalParamType{`std::size_t`, at least 1}
-///     \cgalParamDefault{`default_max_chart_faces` (131,072)}
+///     \cgalParamDefault{`default_max_chart_faces` (\f$ 2^{17} = 131072 \f$)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{require_disk_patches}
 ///     \cgalParamDescription{when `false`, patches that are not topological disks are parameterized
@@ -911,7 +917,7 @@ Parameterization_report parameterize_patches_with_tree(const TriangleMesh& tm, F
 ///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{geom_traits}
-///     \cgalParamDescription{an instance of a geometric traits class, used to read coordinates}
+///     \cgalParamDescription{an instance of a geometric traits class, used only to read coordinates: they are converted with `CGAL::to_double()` and all computation runs in `double` whatever the kernel}
 ///     \cgalParamType{a model of `Kernel`}
 ///     \cgalParamDefault{a \cgal Kernel deduced from the point type}
 ///   \cgalParamNEnd
@@ -924,6 +930,22 @@ Parameterization_report parameterize_patches_with_tree(const TriangleMesh& tm, F
 ///
 /// @throws Input_error on a bad mesh (as `voronoi_fps_segmentation()`), on patch ids that are not
 ///         contiguous, or on a patch that is not a topological disk (unless `require_disk_patches(false)`).
+///
+/// Complexity, for `F` faces and `V` vertices, with `M` the smaller of `F`
+/// and `max_chart_faces`: expected \f$ O(F + V) \f$ time to read the mesh and
+/// test the patches. A chart of `m` faces is parameterized in expected
+/// \f$ O(m^{3/2}) \f$ time and \f$ O(m \log m) \f$ memory, the usual bounds of
+/// the sparse factorization of its Laplacian with a fill-reducing ordering
+/// (ARAP's ten iterations reuse one factorization; each fallback method adds
+/// one), and validated in \f$ O(m \log m) \f$ time. The candidates of one
+/// level of the merge tree, or of the Voronoi splits below it, are disjoint,
+/// so a level costs expected \f$ O(F (\sqrt{M} + \log F)) \f$ time; there are
+/// as many levels as the tree is high plus the depth of the splits (one
+/// level when every patch meets the bound), and each round of chart merging
+/// costs at most as much as a level. Memory: \f$ O(F + V) \f$ per thread,
+/// plus the UVs of the parameterized ancestors that candidates reuse
+/// (\f$ O(F) \f$ per level) and one factorization per thread (expected
+/// \f$ O(M \log M) \f$).
 template <typename TriangleMesh, typename FacePatchMap, typename UVMap,
           typename NamedParameters = parameters::Default_named_parameters>
 Parameterization_report parameterize_patches(const TriangleMesh& tm,
@@ -931,6 +953,8 @@ Parameterization_report parameterize_patches(const TriangleMesh& tm,
                                              UVMap uv_map,
                                              const NamedParameters& np = parameters::default_values())
 {
+  static_assert(internal::Check_patch_map<FacePatchMap>::value, "");
+  static_assert(internal::Check_named_parameters<NamedParameters>::value, "");
   return internal::parameterize_patches_with_tree(tm, face_patch_map, uv_map, np, internal::merge_tree_parameter(np));
 }
 

@@ -56,6 +56,7 @@ enum merge_charts_t { merge_charts };
 /// package's own parameters, so that CGAL's and the package's parameters
 /// chain in any order, e.g.
 /// `parameters::number_of_seeds(20).vertex_point_map(vpm).merge_threshold(0.6)`.
+/// The parameters are listed on the page \ref PkgDiskSegmentationNamedParameters.
 template <typename T, typename Tag, typename Base = CGAL::internal_np::No_property>
 struct Named_function_parameters
   : public CGAL::Named_function_parameters<T, Tag, Base>
@@ -114,7 +115,10 @@ namespace parameters {
 typedef Named_function_parameters<bool, CGAL::internal_np::all_default_t>
   Default_named_parameters;
 
-/// \ingroup PkgDiskSegmentationRef
+// `default_values()` and the builders below are documented on the manual's
+// page PkgDiskSegmentationNamedParameters and under "Named Parameters" in
+// every function that reads them, not as free functions of the reference.
+/// \cond SKIP_IN_MANUAL
 /// An empty parameter pack: every parameter takes its default value.
 inline Default_named_parameters default_values()
 {
@@ -208,6 +212,7 @@ CGAL_DISK_SEGMENTATION_ADD_PARAMETER(merge_tree_t, merge_tree)
 /// \ingroup PkgDiskSegmentationRef
 /// Patches with more faces than this are split before they are parameterized (`std::size_t`).
 CGAL_DISK_SEGMENTATION_ADD_PARAMETER(max_chart_faces_t, max_chart_faces)
+/// \endcond
 #undef CGAL_DISK_SEGMENTATION_ADD_PARAMETER
 
 } // namespace parameters

@@ -10,6 +10,7 @@
 #include <CGAL/Disk_segmentation/parameters.h>
 #include <CGAL/Disk_segmentation/internal/Face_partition.h>
 #include <CGAL/Disk_segmentation/internal/Indexed_triangle_mesh.h>
+#include <CGAL/Disk_segmentation/internal/Parameter_checks.h>
 #include <CGAL/Disk_segmentation/internal/Region_topology.h>
 #include <CGAL/Disk_segmentation/internal/Voronoi_fps.h>
 
@@ -130,11 +131,11 @@ inline std::size_t refine_regions(const Indexed_triangle_mesh& m,
 ///         whose faces are triangles
 /// @tparam FacePatchMap a model of `ReadWritePropertyMap` with
 ///         `face_descriptor` as key type and an integral value type
-/// @tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+/// @tparam NamedParameters a sequence of \ref PkgDiskSegmentationNamedParameters "Named Parameters"
 ///
 /// @param tm a triangle mesh, manifold, without garbage
 /// @param face_patch_map the partition to refine; receives the refined one
-/// @param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+/// @param np an optional sequence of \ref PkgDiskSegmentationNamedParameters "Named Parameters" among the ones listed below
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{number_of_subsamples}
@@ -149,7 +150,7 @@ inline std::size_t refine_regions(const Indexed_triangle_mesh& m,
 ///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{geom_traits}
-///     \cgalParamDescription{an instance of a geometric traits class, used to read coordinates}
+///     \cgalParamDescription{an instance of a geometric traits class, used only to read coordinates: they are converted with `CGAL::to_double()` and all computation runs in `double` whatever the kernel}
 ///     \cgalParamType{a model of `Kernel`}
 ///     \cgalParamDefault{a \cgal Kernel deduced from the point type}
 ///   \cgalParamNEnd
@@ -169,8 +170,14 @@ inline std::size_t refine_regions(const Indexed_triangle_mesh& m,
 ///
 /// @throws Input_error as `voronoi_fps_segmentation()` does, or if `k < 2`.
 ///
-/// Time: \f$ O(F) \f$ when every region is already a disk; a region of `m`
-/// faces re-sampled once costs \f$ O(m \log m \log k) \f$.
+/// Complexity, for `F` faces and `V` vertices: \f$ O(F + V) \f$ expected time
+/// to read the mesh and test every region (the input ids are hashed): all
+/// the work when every region is already a disk. Re-sampling a region of `m`
+/// faces costs expected \f$ O(m \log m \log k) \f$ time, plus \f$ O(m) \f$ to
+/// test its cells. The regions re-sampled at one depth are disjoint, so each
+/// level of re-sampling costs expected \f$ O(F \log F \log k) \f$; every
+/// level makes the regions smaller, so there are at most `F` levels, and
+/// typically few. Memory: \f$ O(F + V) \f$.
 template <typename TriangleMesh, typename FacePatchMap,
           typename NamedParameters = parameters::Default_named_parameters>
 std::size_t refine_to_topological_disks(const TriangleMesh& tm,
@@ -180,8 +187,11 @@ std::size_t refine_to_topological_disks(const TriangleMesh& tm,
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
 
-  const std::size_t k = internal::checked_number_of_subsamples(
-    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_subsamples), std::size_t(5)));
+  static_assert(internal::Check_patch_map<FacePatchMap>::value, "");
+  static_assert(internal::Check_named_parameters<NamedParameters>::value, "");
+  const std::size_t k = internal::checked_number_of_subsamples(internal::count_parameter(
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_subsamples), std::size_t(5)),
+    "number_of_subsamples"));
 
   internal::Indexed_triangle_mesh m;
   std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> face_handles;

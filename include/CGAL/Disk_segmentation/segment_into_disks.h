@@ -10,6 +10,7 @@
 #include <CGAL/Disk_segmentation/refine_to_topological_disks.h>
 #include <CGAL/Disk_segmentation/voronoi_fps_segmentation.h>
 #include <CGAL/Disk_segmentation/internal/Border_smoother.h>
+#include <CGAL/Disk_segmentation/internal/Parameter_checks.h>
 
 #include <CGAL/Real_timer.h>
 
@@ -40,8 +41,9 @@ Segmentation_steps segment_indexed(const Indexed_triangle_mesh& m, const FaceHan
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
 
-  const std::size_t k = checked_number_of_subsamples(
-    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_subsamples), std::size_t(5)));
+  const std::size_t k = checked_number_of_subsamples(count_parameter(
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_subsamples), std::size_t(5)),
+    "number_of_subsamples"));
   const double threshold = merge_threshold_parameter(np);
 
   Segmentation_steps steps;
@@ -81,13 +83,13 @@ Segmentation_steps segment_indexed(const Indexed_triangle_mesh& m, const FaceHan
 ///         whose faces are triangles
 /// @tparam FacePatchMap a model of `WritablePropertyMap` with
 ///         `face_descriptor` as key type and an integral value type
-/// @tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+/// @tparam NamedParameters a sequence of \ref PkgDiskSegmentationNamedParameters "Named Parameters"
 ///
 /// @param tm a triangle mesh, manifold, without garbage
 /// @param face_patch_map receives the patch id of every face, in `[0, P)`
 ///        where `P` is the returned value, numbered in the order of each
 ///        patch's first face in `faces(tm)`
-/// @param np an optional sequence of \ref bgl_namedparameters "Named Parameters":
+/// @param np an optional sequence of \ref PkgDiskSegmentationNamedParameters "Named Parameters":
 ///        all those of the three functions (`number_of_seeds`, `first_seed`,
 ///        `random_seed`, `seeds_output_iterator`, `number_of_subsamples`,
 ///        `merge_threshold`, `merge_tree`, `smooth_borders`, `vertex_point_map`, `geom_traits`,
@@ -103,12 +105,22 @@ Segmentation_steps segment_indexed(const Indexed_triangle_mesh& m, const FaceHan
 ///
 /// @throws Input_error as the three functions do; `face_patch_map` is not
 ///         written then.
+///
+/// Complexity, for `F` faces and `V` vertices: the sum of the three steps'
+/// (see each function), the mesh being read once in \f$ O(F + V) \f$ time;
+/// the first step takes expected \f$ O(F \log F \log n) \f$ time.
+/// `smooth_borders(true)` adds \f$ O(F) \f$ expected time on a mesh of
+/// bounded vertex degree (at most \f$ 4F \f$ face moves). Memory:
+/// \f$ O(F + V) \f$, plus the candidates of the merge step (see
+/// `merge_disk_regions()`).
 template <typename TriangleMesh, typename FacePatchMap,
           typename NamedParameters = parameters::Default_named_parameters>
 std::size_t segment_into_disks(const TriangleMesh& tm,
                                FacePatchMap face_patch_map,
                                const NamedParameters& np = parameters::default_values())
 {
+  static_assert(internal::Check_patch_map<FacePatchMap>::value, "");
+  static_assert(internal::Check_named_parameters<NamedParameters>::value, "");
   internal::Indexed_triangle_mesh m;
   std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> face_handles;
   internal::build_indexed_triangle_mesh(tm, np, m, face_handles);

@@ -67,6 +67,9 @@ Region_counts count_face_range(const FaceRange& face_range, const TriangleMesh& 
 /// Returns the Euler characteristic `V - E + F` of the faces of `face_range`,
 /// where `V` and `E` count the distinct vertices and edges of those faces.
 ///
+/// Complexity: expected \f$ O(k) \f$ time and memory for the `k` faces of
+/// the range (their descriptors are hashed).
+///
 /// @tparam FaceRange a range of `boost::graph_traits<TriangleMesh>::%face_descriptor`
 ///         without repetition
 /// @tparam TriangleMesh a model of `FaceGraph` whose faces are triangles
@@ -88,6 +91,9 @@ long euler_characteristic(const FaceRange& face_range, const TriangleMesh& tm)
 ///
 /// `tm` must be manifold (every vertex has a single fan of faces), which the
 /// segmentation functions check.
+///
+/// Complexity: expected \f$ O(k) \f$ time and memory for the `k` faces of
+/// the range (their descriptors are hashed).
 ///
 /// @tparam FaceRange a range of `boost::graph_traits<TriangleMesh>::%face_descriptor`
 ///         without repetition

@@ -9,6 +9,7 @@
 #include <CGAL/Disk_segmentation/pack_patches.h>
 #include <CGAL/Disk_segmentation/parameterize_patches.h>
 #include <CGAL/Disk_segmentation/segment_into_disks.h>
+#include <CGAL/Disk_segmentation/internal/Parameter_checks.h>
 #include <CGAL/Disk_segmentation/internal/Progress.h>
 
 #include <CGAL/Dynamic_property_map.h>
@@ -46,21 +47,24 @@ struct Atlas_report
 ///
 /// Checks every parameter that `uv_atlas()` reads, without a mesh, so that a
 /// program can refuse a bad parameter before it reads or computes anything.
-/// `uv_atlas()` runs the same checks first.
+/// `uv_atlas()` runs the same checks first. Constant time and memory.
 ///
-/// @tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+/// @tparam NamedParameters a sequence of \ref PkgDiskSegmentationNamedParameters "Named Parameters"
 /// @param np the named parameters that will be given to `uv_atlas()`
 ///
 /// @throws Input_error naming the first parameter out of its range.
 template <typename NamedParameters = parameters::Default_named_parameters>
 void check_uv_atlas_parameters(const NamedParameters& np = parameters::default_values())
 {
+  static_assert(internal::Check_named_parameters<NamedParameters>::value, "");
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  internal::checked_number_of_seeds(
-    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_seeds), std::size_t(10)));
-  internal::checked_number_of_subsamples(
-    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_subsamples), std::size_t(5)));
+  internal::checked_number_of_seeds(internal::count_parameter(
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_seeds), std::size_t(10)),
+    "number_of_seeds"));
+  internal::checked_number_of_subsamples(internal::count_parameter(
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_subsamples), std::size_t(5)),
+    "number_of_subsamples"));
   internal::merge_threshold_parameter(np);
   internal::parameterization_settings(np);
   internal::packing_settings(np);
@@ -77,11 +81,11 @@ void check_uv_atlas_parameters(const NamedParameters& np = parameters::default_v
 /// @tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph` whose faces are triangles
 /// @tparam UVMap a model of `WritablePropertyMap` with `halfedge_descriptor` as key type and a 2D
 ///         point type (constructible from two `double`, with `x()` and `y()`) as value type
-/// @tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+/// @tparam NamedParameters a sequence of \ref PkgDiskSegmentationNamedParameters "Named Parameters"
 ///
 /// @param tm a triangle mesh, manifold, without garbage
 /// @param uv_map receives per-corner UVs: `uv_map[h]` is the UV of `target(h)` in `face(h)`
-/// @param np an optional sequence of \ref bgl_namedparameters "Named Parameters": those of
+/// @param np an optional sequence of \ref PkgDiskSegmentationNamedParameters "Named Parameters": those of
 ///        `segment_into_disks()`, `parameterize_patches()` and `pack_patches()`, and
 ///
 /// \cgalNamedParamsBegin
@@ -112,9 +116,16 @@ void check_uv_atlas_parameters(const NamedParameters& np = parameters::default_v
 /// @return the sizes and times of every stage, and the reports of `parameterize_patches()` and `pack_patches()`
 ///
 /// @throws Input_error on a bad mesh or parameter (see the three functions); the maps are not written then.
+///
+/// Complexity: the sum of those of `segment_into_disks()`,
+/// `parameterize_patches()` and `pack_patches()`, each of which reads the
+/// mesh again in \f$ O(F + V) \f$ time for `F` faces and `V` vertices; the
+/// parameterization takes most of the time in practice. Memory: the largest
+/// of the three, plus \f$ O(F) \f$ for the patch ids and the merge tree.
 template <typename TriangleMesh, typename UVMap, typename NamedParameters = parameters::Default_named_parameters>
 Atlas_report uv_atlas(const TriangleMesh& tm, UVMap uv_map, const NamedParameters& np = parameters::default_values())
 {
+  static_assert(internal::Check_named_parameters<NamedParameters>::value, "");
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   typedef typename boost::property_map<TriangleMesh, CGAL::dynamic_face_property_t<std::size_t> >::const_type

@@ -10,6 +10,7 @@
 #include <CGAL/Disk_segmentation/parameters.h>
 #include <CGAL/Disk_segmentation/internal/Face_partition.h>
 #include <CGAL/Disk_segmentation/internal/Indexed_triangle_mesh.h>
+#include <CGAL/Disk_segmentation/internal/Parameter_checks.h>
 #include <CGAL/Disk_segmentation/internal/Voronoi_fps.h>
 
 #include <CGAL/Random.h>
@@ -46,8 +47,9 @@ std::vector<Index> voronoi_fps_labels(const Indexed_triangle_mesh& m,
   using CGAL::parameters::get_parameter;
   using CGAL::parameters::is_default_parameter;
 
-  const std::size_t n = checked_number_of_seeds(
-    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_seeds), std::size_t(10)));
+  const std::size_t n = checked_number_of_seeds(count_parameter(
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_seeds), std::size_t(10)),
+    "number_of_seeds"));
 
   Index first = no_index;
   if(!is_default_parameter<NamedParameters, Disk_segmentation::internal_np::first_seed_t>::value)
@@ -108,12 +110,12 @@ void write_seeds(const NamedParameters& np, const std::vector<Index>& seeds, con
 /// @tparam FacePatchMap a model of `WritablePropertyMap` with
 ///         `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and
 ///         an integral value type (`std::size_t` recommended)
-/// @tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+/// @tparam NamedParameters a sequence of \ref PkgDiskSegmentationNamedParameters "Named Parameters"
 ///
 /// @param tm a triangle mesh, manifold, without garbage
 /// @param face_patch_map receives for every face the id of its cell; cell `i`
 ///        is the cell of the `i`-th seed (ids are `0` to the returned value minus one)
-/// @param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+/// @param np an optional sequence of \ref PkgDiskSegmentationNamedParameters "Named Parameters" among the ones listed below
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{number_of_seeds}
@@ -143,7 +145,7 @@ void write_seeds(const NamedParameters& np, const std::vector<Index>& seeds, con
 ///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{geom_traits}
-///     \cgalParamDescription{an instance of a geometric traits class, used to read coordinates}
+///     \cgalParamDescription{an instance of a geometric traits class, used only to read coordinates: they are converted with `CGAL::to_double()` and all computation runs in `double` whatever the kernel}
 ///     \cgalParamType{a model of `Kernel`}
 ///     \cgalParamDefault{a \cgal Kernel deduced from the point type}
 ///   \cgalParamNEnd
@@ -169,12 +171,20 @@ void write_seeds(const NamedParameters& np, const std::vector<Index>& seeds, con
 /// The result depends only on the mesh (faces and vertices in the order of
 /// `faces(tm)` and `vertices(tm)`) and the parameters: it is the same for
 /// `Surface_mesh` and `Polyhedron_3` holding the same mesh.
+///
+/// Complexity, for `F` faces and `V` vertices: \f$ O(F + V) \f$ time to read
+/// the mesh, then expected \f$ O(F \log F \log n) \f$ time for the seeds and
+/// cells (worst case \f$ O(n F \log F) \f$: the Dijkstra of each new seed
+/// visits only the faces that join its cell, at most all of them).
+/// Memory: \f$ O(F + V) \f$.
 template <typename TriangleMesh, typename FacePatchMap,
           typename NamedParameters = parameters::Default_named_parameters>
 std::size_t voronoi_fps_segmentation(const TriangleMesh& tm,
                                      FacePatchMap face_patch_map,
                                      const NamedParameters& np = parameters::default_values())
 {
+  static_assert(internal::Check_patch_map<FacePatchMap>::value, "");
+  static_assert(internal::Check_named_parameters<NamedParameters>::value, "");
   internal::Indexed_triangle_mesh m;
   std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> face_handles;
   internal::build_indexed_triangle_mesh(tm, np, m, face_handles);

@@ -7,12 +7,15 @@
 // Exits with 1 on any failure.
 
 #include <CGAL/Disk_segmentation.h>
+#include <CGAL/Disk_segmentation/IO/write_atlas_OBJ.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/generators.h>
 
 #include <exception>
 #include <iostream>
+#include <sstream>
+#include <string>
 #include <vector>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -58,6 +61,26 @@ int main(int argc, char** argv)
       }
 
     std::cout << "patches: " << count << " (" << num_faces(mesh) << " faces)" << std::endl;
+
+    // The installed atlas writer: one group per chart in the OBJ file.
+    auto uv = mesh.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:uv").first;
+    DS::uv_atlas(mesh, uv, DS::parameters::face_patch_map(patch));
+    std::ostringstream obj;
+    if(!DS::IO::write_atlas_OBJ(obj, mesh, patch, uv))
+    {
+      std::cerr << "consumer: write_atlas_OBJ failed" << std::endl;
+      return 1;
+    }
+    std::size_t groups = 0;
+    std::istringstream lines(obj.str());
+    for(std::string line; std::getline(lines, line);)
+      groups += line.compare(0, 8, "g chart_") == 0 ? 1 : 0;
+    if(groups == 0)
+    {
+      std::cerr << "consumer: the OBJ atlas has no chart group" << std::endl;
+      return 1;
+    }
+    std::cout << "OBJ atlas: " << groups << " chart groups" << std::endl;
     return count > 0 ? 0 : 1;
   }
   catch(const std::exception& e)

@@ -7,6 +7,7 @@
 #include <CGAL/disable_warnings.h>
 
 #include <CGAL/Disk_segmentation/Input_error.h>
+#include <CGAL/Disk_segmentation/internal/Parameter_checks.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -429,19 +430,31 @@ template <typename TriangleMesh, typename NamedParameters>
 auto make_coordinates_reader(const TriangleMesh& tm, const NamedParameters& np)
 {
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
-  typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type Geom_traits;
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, tm));
-  const Geom_traits gt = choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits));
-  return [vpm, gt](vertex_descriptor v) -> std::array<double, 3>
+  typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type Vertex_point_map;
+  typedef typename boost::property_traits<Vertex_point_map>::value_type Point;
+  static_assert(is_kernel_point<Point>::value,
+                "CGAL::Disk_segmentation: the vertex point map's value type must be a CGAL point with a "
+                "kernel (e.g. Kernel::Point_3), not a plain array or a user type");
+  // Without a kernel nothing below compiles; leaving it out keeps the
+  // static_assert the only error.
+  if constexpr(is_kernel_point<Point>::value)
   {
-    const auto& p = get(vpm, v);
-    return {{ CGAL::to_double(gt.compute_x_3_object()(p)),
-              CGAL::to_double(gt.compute_y_3_object()(p)),
-              CGAL::to_double(gt.compute_z_3_object()(p)) }};
-  };
+    typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type Geom_traits;
+    using CGAL::parameters::choose_parameter;
+    using CGAL::parameters::get_parameter;
+    const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                      get_const_property_map(CGAL::vertex_point, tm));
+    const Geom_traits gt = choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits));
+    return [vpm, gt](vertex_descriptor v) -> std::array<double, 3>
+    {
+      const auto& p = get(vpm, v);
+      return {{ CGAL::to_double(gt.compute_x_3_object()(p)),
+                CGAL::to_double(gt.compute_y_3_object()(p)),
+                CGAL::to_double(gt.compute_z_3_object()(p)) }};
+    };
+  }
+  else
+    return [](vertex_descriptor) { return std::array<double, 3>{{ 0., 0., 0. }}; };
 }
 
 // The whole of `tm` as an indexed mesh, with the face descriptors in index order.
