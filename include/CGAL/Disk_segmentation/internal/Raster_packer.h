@@ -13,6 +13,10 @@
 
 #include <CGAL/Disk_segmentation/internal/Profile_packer.h>
 
+#if defined(_MSC_VER)
+#  include <intrin.h>
+#endif
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -24,6 +28,18 @@
 namespace CGAL {
 namespace Disk_segmentation {
 namespace internal {
+
+// Index of the lowest set bit of a non-zero word.
+inline std::size_t lowest_set_bit(std::uint64_t v)
+{
+#if defined(_MSC_VER)
+  unsigned long index;
+  _BitScanForward64(&index, v);
+  return static_cast<std::size_t>(index);
+#else
+  return static_cast<std::size_t>(__builtin_ctzll(v));
+#endif
+}
 
 // Rows of cells, one bit per cell.
 class Cell_rows
@@ -65,7 +81,7 @@ public:
     for(;;)
     {
       if(v != 0)
-        return (std::min)(end, (w << 6) + static_cast<std::size_t>(__builtin_ctzll(v)));
+        return (std::min)(end, (w << 6) + lowest_set_bit(v));
       if(++w >= words_ || (w << 6) >= end)
         return end;
       v = row[w];
@@ -81,7 +97,7 @@ public:
     for(;;)
     {
       if(v != 0)
-        return (std::min)(columns_, (w << 6) + static_cast<std::size_t>(__builtin_ctzll(v)));
+        return (std::min)(columns_, (w << 6) + lowest_set_bit(v));
       if(++w >= words_)
         return columns_;
       v = ~row[w];
