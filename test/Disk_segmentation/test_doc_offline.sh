@@ -1,7 +1,8 @@
 #!/bin/bash
 # Checks that the generated manual reads without network: no page loads a
 # script, a style sheet or an image from a remote address, and every local
-# script a page loads exists (MathJax included).
+# script a page loads exists (MathJax included). Also checks the manual's
+# own page names and a few of its texts that a user found wrong once.
 # Usage: test_doc_offline.sh HTML_DIR
 set -u
 html="$1"
@@ -33,5 +34,23 @@ if [ -e "$html/bgl_namedparameters.html" ]; then
 fi
 if [ ! -f "$html/PkgDiskSegmentationNamedParameters.html" ]; then
   echo "FAIL: $html has no PkgDiskSegmentationNamedParameters.html (the named-parameter page)"; status=1
+fi
+# Texts a user found wrong: the overview first on the main page, the
+# benchmark's authors, a default split at its comma by Doxygen, a brief cut
+# at "et al.", the parameter builders listed as free functions.
+grep -q "GPL-3.0-or-later" "$html/index.html" ||
+  { echo "FAIL: the main page does not give the license (the overview is not first)"; status=1; }
+if grep -lq "Sawhney" "$html"/*.html; then
+  echo "FAIL: the manual still attributes the metrics' benchmark to Sawhney et al. (it is Shay, Solomon and Stein)"; status=1
+fi
+if grep -q "131, 072" "$html"/*.html; then
+  echo "FAIL: a default shows as \"131, 072\""; status=1
+fi
+reference="$html/group__PkgDiskSegmentationRef.html"
+if grep -q 'Liu et al\.</td>\|Liu et al\.  *<a' "$reference"; then
+  echo "FAIL: the ARAP brief is cut at \"Liu et al.\""; status=1
+fi
+if grep -q 'class="memname".*parameters::number_of_seeds' "$html"/*.html; then
+  echo "FAIL: the parameter builders are listed as free functions"; status=1
 fi
 exit $status
