@@ -788,8 +788,7 @@ TEST(Atlas, FreeBorderLscmAndArapKeepAPlanarChartUpToASimilarity)
   ASSERT_EQ(border.size(), 12u);
   const DS::internal::Chart_geometry g = DS::internal::chart_geometry(p.m, c);
   std::vector<std::array<double, 2> > lscm;
-  ASSERT_TRUE(DS::internal::free_border_lscm(g.points, g.triangles,
-                                             std::vector<std::size_t>(border.begin(), border.end()), lscm));
+  ASSERT_TRUE(DS::internal::free_border_lscm(g, std::vector<std::size_t>(border.begin(), border.end()), lscm));
   EXPECT_EQ(similarity_problem(p.m, c, lscm, 1e-6), "");
 
   std::vector<DS::internal::Index> loop;

@@ -317,23 +317,17 @@ std::string run_parameterizer(Chart_mesh& mesh, Parameterizer parameterizer,
   return std::string();
 }
 
-// A chart's 3D positions and triangles, as the solvers take them.
-struct Chart_geometry
-{
-  std::vector<std::array<double, 3> > points;
-  std::vector<std::array<std::size_t, 3> > triangles;
-};
-
 inline Chart_geometry chart_geometry(const Indexed_triangle_mesh& m, const Chart& c)
 {
-  Chart_geometry g;
-  g.points.reserve(c.vertices.size());
+  std::vector<std::array<double, 3> > points;
+  points.reserve(c.vertices.size());
   for(Index v : c.vertices)
-    g.points.push_back(m.points[v]);
-  g.triangles.reserve(c.triangles.size());
+    points.push_back(m.points[v]);
+  std::vector<std::array<std::size_t, 3> > triangles;
+  triangles.reserve(c.triangles.size());
   for(const auto& t : c.triangles)
-    g.triangles.push_back({{ t[0], t[1], t[2] }});
-  return g;
+    triangles.push_back({{ t[0], t[1], t[2] }});
+  return Chart_geometry(std::move(points), std::move(triangles));
 }
 
 // ARAP iterations on `c` from `start`. A valid start keeps only valid
@@ -346,12 +340,12 @@ inline bool arap_from(Chart& c, const std::vector<Index>& border_loop, const Cha
   auto is_valid = [&](const Chart_uv& candidate) { return chart_uv_problem(c, candidate, border_loop).empty(); };
   if(is_valid(start))
   {
-    if(local_global_arap(g.points, g.triangles, start, arap_iterations, is_valid) < 0)
+    if(local_global_arap(g, start, arap_iterations, is_valid) < 0)
       return false;
   }
   else
   {
-    if(local_global_arap(g.points, g.triangles, start, arap_iterations, [](const Chart_uv&) { return true; }) < 0)
+    if(local_global_arap(g, start, arap_iterations, [](const Chart_uv&) { return true; }) < 0)
       return false;
     keep_winding(c, start);
     if(!is_valid(start))
@@ -372,7 +366,7 @@ inline bool arap_from_lscm(const Indexed_triangle_mesh& m, Chart& c, std::vector
     return false;
   const Chart_geometry g = chart_geometry(m, c);
   Chart_uv start;
-  if(!free_border_lscm(g.points, g.triangles, std::vector<std::size_t>(border_loop.begin(), border_loop.end()), start))
+  if(!free_border_lscm(g, std::vector<std::size_t>(border_loop.begin(), border_loop.end()), start))
     return false;
   keep_winding(c, start);
   return arap_from(c, border_loop, g, std::move(start));

@@ -35,12 +35,13 @@ namespace internal {
 // first border vertex, then the one farthest from it, at their 3D
 // distance apart on the u axis), which removes the similarities from the
 // null space. `border` is the chart's border cycle in the orientation of
-// its (counterclockwise) triangles. Returns false when the factorization
+// its (counterclockwise) triangles `g.triangles`. Returns false when the factorization
 // fails (degenerate triangles); `uv` is then unspecified.
-inline bool free_border_lscm(const std::vector<std::array<double, 3> >& points,
-                             const std::vector<std::array<std::size_t, 3> >& triangles,
-                             const std::vector<std::size_t>& border, std::vector<std::array<double, 2> >& uv)
+inline bool free_border_lscm(const Chart_geometry& g, const std::vector<std::size_t>& border,
+                             std::vector<std::array<double, 2> >& uv)
 {
+  const std::vector<std::array<double, 3> >& points = g.points;
+  const std::vector<std::array<std::size_t, 3> >& triangles = g.triangles;
   const std::size_t n = points.size();
   uv.assign(n, {{ 0., 0. }});
   if(n < 3 || border.size() < 3)
@@ -67,24 +68,25 @@ inline bool free_border_lscm(const std::vector<std::array<double, 3> >& points,
 
   // Free vertex k (in elimination order) has unknowns 2k (u) and 2k+1 (v).
   const Eigen::Index none = -1;
-  const std::vector<Eigen::Index> rank = vertex_elimination_rank(n, triangles);
+  const std::vector<Eigen::Index>& rank = g.elimination_rank;
   std::vector<Eigen::Index> unknown(n, none);
   const Eigen::Index free_vertices = static_cast<Eigen::Index>(n) - 2;
   for(std::size_t v = 0; v < n; ++v)
     if(v != pin0 && v != pin1)
       unknown[v] = rank[v] - (rank[v] > rank[pin0] ? 1 : 0) - (rank[v] > rank[pin1] ? 1 : 0);
   std::vector<Eigen::Triplet<double> > entries;
-  entries.reserve(24 * triangles.size() + 4 * border.size());
+  entries.reserve(14 * triangles.size() + 2 * border.size());
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(2 * free_vertices);
   // Adds h to H at (row, col) for coordinates cr, cc (0: u, 1: v) of
   // vertices r, c; a pinned column goes to the right-hand side.
+  // Only the lower triangle goes to the matrix (the solver reads no more).
   auto add = [&](std::size_t r, int cr, std::size_t c, int cc, double h) {
     if(unknown[r] == none)
       return;
     const Eigen::Index row = 2 * unknown[r] + cr;
     if(unknown[c] == none)
       rhs[row] -= h * uv[c][cc];
-    else
+    else if(row >= 2 * unknown[c] + cc)
       entries.emplace_back(row, 2 * unknown[c] + cc, h);
   };
 

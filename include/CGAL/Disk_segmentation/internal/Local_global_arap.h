@@ -12,6 +12,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -21,22 +23,23 @@ namespace internal {
 // Rank of each vertex in a fill-reducing elimination order (approximate
 // minimum degree on the vertex graph). The LSCM and ARAP systems of a
 // chart are both built on this graph (LSCM's with two unknowns per vertex,
-// side by side), so the vertex graph's ordering serves both: ordering the
-// LSCM system itself, twice as large, cost more than its factorization on
-// small charts. (Each system still computes it once; passing it from the
-// LSCM start to ARAP would save the second.)
+// side by side), so one ordering of the vertex graph serves both: ordering
+// the LSCM system itself, twice as large, cost more than its factorization
+// on small charts.
 inline std::vector<Eigen::Index> vertex_elimination_rank(std::size_t n,
                                                          const std::vector<std::array<std::size_t, 3> >& triangles)
 {
+  // One triangle of the pattern is enough: the ordering symmetrizes it.
+  // (The diagonal is needed: Eigen's AMD does not always end without it.)
   std::vector<Eigen::Triplet<double> > entries;
-  entries.reserve(6 * triangles.size() + n);
+  entries.reserve(3 * triangles.size() + n);
   for(std::size_t v = 0; v < n; ++v)
     entries.emplace_back(Eigen::Index(v), Eigen::Index(v), 1.);
   for(const auto& t : triangles)
     for(int i = 0; i < 3; ++i)
     {
-      entries.emplace_back(Eigen::Index(t[i]), Eigen::Index(t[(i + 1) % 3]), 1.);
-      entries.emplace_back(Eigen::Index(t[(i + 1) % 3]), Eigen::Index(t[i]), 1.);
+      const std::size_t a = t[i], b = t[(i + 1) % 3];
+      entries.emplace_back(Eigen::Index((std::max)(a, b)), Eigen::Index((std::min)(a, b)), 1.);
     }
   Eigen::SparseMatrix<double> graph(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
   graph.setFromTriplets(entries.begin(), entries.end());
@@ -50,7 +53,22 @@ inline std::vector<Eigen::Index> vertex_elimination_rank(std::size_t n,
   return rank;
 }
 
-// Sparse LDL^T on a matrix already in elimination order.
+// A chart's 3D positions, its triangles (counterclockwise) and the
+// elimination rank of its vertices, as the LSCM and ARAP solvers take them.
+struct Chart_geometry
+{
+  std::vector<std::array<double, 3> > points;
+  std::vector<std::array<std::size_t, 3> > triangles;
+  std::vector<Eigen::Index> elimination_rank;
+
+  Chart_geometry() = default;
+  Chart_geometry(std::vector<std::array<double, 3> > p, std::vector<std::array<std::size_t, 3> > t)
+    : points(std::move(p)), triangles(std::move(t)), elimination_rank(vertex_elimination_rank(points.size(), triangles))
+  {}
+};
+
+// Sparse LDL^T on a matrix already in elimination order; only its lower
+// triangle is read, so only that is assembled.
 typedef Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int> >
   Ordered_sparse_ldlt;
 
@@ -104,19 +122,18 @@ inline bool isometric_frames(const std::vector<std::array<double, 3> >& points,
 // once (sparse LDL^T) and each iteration costs one local SVD per triangle and
 // two back-substitutions.
 //
-// `points` are the chart's 3D vertex positions, `triangles` its faces
-// (counterclockwise), `uv` the initial map, improved in place.
+// `g` is the chart's geometry, `uv` the initial map, improved in place.
 // `is_acceptable(uv)` vets every iterate; a rejected one is replaced by a
 // shorter step from the last valid iterate, and the iterations stop when no
 // step is accepted. From a valid start (e.g. mean value coordinates) the
 // result is therefore always valid. Returns the number of iterations done,
 // or -1 if the factorization fails (degenerate triangles).
 template <typename Acceptance>
-int local_global_arap(const std::vector<std::array<double, 3> >& points,
-                      const std::vector<std::array<std::size_t, 3> >& triangles,
-                      std::vector<std::array<double, 2> >& uv, int iterations,
+int local_global_arap(const Chart_geometry& g, std::vector<std::array<double, 2> >& uv, int iterations,
                       const Acceptance& is_acceptable)
 {
+  const std::vector<std::array<double, 3> >& points = g.points;
+  const std::vector<std::array<std::size_t, 3> >& triangles = g.triangles;
   const std::size_t n = points.size(), nt = triangles.size();
   if(n < 3 || nt == 0)
     return 0;
@@ -130,9 +147,9 @@ int local_global_arap(const std::vector<std::array<double, 3> >& points,
   // translation from the Laplacian's null space and makes it definite.
   // The other vertices are numbered in elimination order.
   typedef Eigen::SparseMatrix<double> Matrix;
-  const std::vector<Eigen::Index> rank = vertex_elimination_rank(n, triangles);
+  const std::vector<Eigen::Index>& rank = g.elimination_rank;
   std::vector<Eigen::Triplet<double> > entries;
-  entries.reserve(12 * nt);
+  entries.reserve(9 * nt);
   auto unknown = [&rank](std::size_t v) { return rank[v] - (rank[v] > rank[0] ? 1 : 0); };
   for(std::size_t t = 0; t < nt; ++t)
     for(int i = 0; i < 3; ++i)
@@ -142,10 +159,7 @@ int local_global_arap(const std::vector<std::array<double, 3> >& points,
       if(a != 0) entries.emplace_back(unknown(a), unknown(a), w);
       if(b != 0) entries.emplace_back(unknown(b), unknown(b), w);
       if(a != 0 && b != 0)
-      {
-        entries.emplace_back(unknown(a), unknown(b), -w);
-        entries.emplace_back(unknown(b), unknown(a), -w);
-      }
+        entries.emplace_back((std::max)(unknown(a), unknown(b)), (std::min)(unknown(a), unknown(b)), -w);
     }
   Matrix laplacian(static_cast<Eigen::Index>(n - 1), static_cast<Eigen::Index>(n - 1));
   laplacian.setFromTriplets(entries.begin(), entries.end());
