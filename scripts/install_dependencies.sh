@@ -10,6 +10,7 @@ packages=(
   libgtest-dev libbenchmark-dev
   libcli11-dev nlohmann-json3-dev libtinygltf-dev libstb-dev pkg-config
   doxygen graphviz libjs-mathjax
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-distributed blender
   "$@"
 )
 

@@ -15,6 +15,6 @@ export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}
 # build.sh passes -DCMAKE_BUILD_TYPE=Release first; the later value wins.
 bash "$root/scripts/build.sh" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
   -DDISK_SEGMENTATION_SANITIZE=ON \
-  -DDISK_SEGMENTATION_BUILD_DOC=OFF -DDISK_SEGMENTATION_BUILD_TESTS=ON -DDISK_SEGMENTATION_BUILD_EXAMPLES=ON
+  -DDISK_SEGMENTATION_BUILD_DOC=OFF -DDISK_SEGMENTATION_BUILD_PYTHON=OFF -DDISK_SEGMENTATION_BUILD_TESTS=ON -DDISK_SEGMENTATION_BUILD_EXAMPLES=ON
 cd "$build"
 ctest --output-on-failure -j "$(nproc)" -E 'install_and_consume|doc_|compile_checks'

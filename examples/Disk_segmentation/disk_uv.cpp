@@ -27,6 +27,7 @@
 #include <CGAL/Disk_segmentation/IO/write_atlas_GLB.h>
 #include <CGAL/Disk_segmentation/IO/write_atlas_OBJ.h>
 #include <CGAL/Disk_segmentation/IO/write_atlas_PNG.h>
+#include "atlas_report_json.h"
 #include "mesh_io.h"
 #include "output_files.h"
 
@@ -45,7 +46,6 @@
 #include <iostream>
 #include <limits>
 #include <string>
-#include <sys/resource.h>
 #include <unistd.h>
 
 namespace DS = CGAL::Disk_segmentation;
@@ -80,54 +80,6 @@ void write_patch_ids(std::ostream& out, const Mesh& mesh, const Patch_map& patch
 {
   for(Mesh::Face_index f : mesh.faces())
     out << patch[f] << '\n';
-}
-
-// The process's peak resident memory so far, in MB (Linux reports KB).
-double peak_rss_mb()
-{
-  struct rusage usage;
-  if(::getrusage(RUSAGE_SELF, &usage) != 0)
-    return 0;
-  return double(usage.ru_maxrss) / 1024.;
-}
-
-nlohmann::json report_json(const std::string& input, const Mesh& mesh, const DS::Atlas_report& r,
-                           const std::string& method, const std::string& packer, double read_seconds,
-                           const disk_uv::Read_changes& changes)
-{
-  nlohmann::json charts = nlohmann::json::array();
-  for(const DS::Chart_report& c : r.parameterization.charts)
-    charts.push_back({ { "patch", c.patch }, { "faces", c.faces }, { "requested", DS::to_string(c.requested) },
-                       { "used", DS::to_string(c.used) }, { "fallback", c.fallback }, { "split", c.split },
-                       { "valid", c.valid }, { "problem", c.problem },
-                       { "angle_distortion", c.angle_distortion }, { "area_distortion", c.area_distortion },
-                       { "max_stretch", c.max_stretch }, { "min_area_scale", c.min_area_scale },
-                       { "max_area_scale", c.max_area_scale }, { "stretch_p95", c.stretch_p95 } });
-  return {
-    { "input", input },
-    { "faces", r.number_of_faces },
-    { "vertices", mesh.number_of_vertices() },
-    { "method", method },
-    { "packer", packer },
-    { "input_changes", { { "polygons_triangulated", changes.polygons_triangulated },
-                         { "fan_triangulations", changes.fan_triangulations },
-                         { "faces_added", changes.faces_added },
-                         { "faces_removed", changes.faces_removed },
-                         { "vertices_added", changes.vertices_added },
-                         { "vertices_removed", changes.vertices_removed },
-                         { "pinched_vertices_split", changes.pinched_vertices_split } } },
-    { "segmentation", { { "voronoi_cells", r.number_of_voronoi_cells },
-                        { "refined_regions", r.number_of_refined_regions },
-                        { "charts", r.number_of_charts } } },
-    { "parameterization", { { "fallbacks", r.parameterization.number_of_fallbacks },
-                            { "split_patches", r.parameterization.number_of_split_patches },
-                            { "invalid_charts", r.parameterization.number_of_invalid_charts } } },
-    { "packing", { { "efficiency", r.packing.efficiency }, { "texels_per_unit", r.packing.texels_per_unit } } },
-    { "seconds", { { "read", read_seconds }, { "voronoi", r.voronoi_seconds }, { "refine", r.refine_seconds },
-                   { "merge", r.merge_seconds }, { "parameterization", r.parameterization_seconds },
-                   { "packing", r.packing_seconds }, { "total", r.total_seconds } } },
-    { "peak_rss_mb", peak_rss_mb() },
-    { "charts", charts } };
 }
 
 // CLI11 reads "-1" into an unsigned option as a huge number and saturates
@@ -275,7 +227,8 @@ int main(int argc, char** argv)
     add_output("--patch-ids", patch_ids_path, [&](std::ostream& o) { write_patch_ids(o, mesh, patch); });
     add_output("--colored", colored_path, [&](std::ostream& o) { write_colored_ply(o, mesh, patch); });
     add_output("--report", report_path, [&](std::ostream& o) {
-      o << report_json(input, mesh, *report_ptr, method_name, packer_name, read_seconds, *changes_ptr).dump(2)
+      o << disk_uv::atlas_report_json(input, mesh.number_of_vertices(), *report_ptr, method_name, packer_name,
+                                     read_seconds, *changes_ptr).dump(2)
         << '\n';
     });
 

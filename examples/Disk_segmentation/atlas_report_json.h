@@ -1,0 +1,75 @@
+// Copyright (c) 2026 The Disk_segmentation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+// The JSON report of an atlas, shared by disk_uv --report and the Python
+// module's Atlas.report.
+
+#ifndef DISK_SEGMENTATION_EXAMPLES_ATLAS_REPORT_JSON_H
+#define DISK_SEGMENTATION_EXAMPLES_ATLAS_REPORT_JSON_H
+
+#include "mesh_io.h"
+
+#include <CGAL/Disk_segmentation/Parameterization_method.h>
+#include <CGAL/Disk_segmentation/uv_atlas.h>
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <sys/resource.h>
+
+namespace disk_uv {
+
+// The process's peak resident memory so far, in MB (Linux reports KB).
+inline double peak_rss_mb()
+{
+  struct rusage usage;
+  if(::getrusage(RUSAGE_SELF, &usage) != 0)
+    return 0;
+  return double(usage.ru_maxrss) / 1024.;
+}
+
+// Everything disk_uv's --report holds: sizes, input changes, stage times,
+// peak memory and one entry per chart. `input` names the mesh's source.
+inline nlohmann::json atlas_report_json(const std::string& input, std::size_t vertices,
+                                        const CGAL::Disk_segmentation::Atlas_report& r, const std::string& method,
+                                        const std::string& packer, double read_seconds, const Read_changes& changes)
+{
+  namespace DS = CGAL::Disk_segmentation;
+  nlohmann::json charts = nlohmann::json::array();
+  for(const DS::Chart_report& c : r.parameterization.charts)
+    charts.push_back({ { "patch", c.patch }, { "faces", c.faces }, { "requested", DS::to_string(c.requested) },
+                       { "used", DS::to_string(c.used) }, { "fallback", c.fallback }, { "split", c.split },
+                       { "valid", c.valid }, { "problem", c.problem },
+                       { "angle_distortion", c.angle_distortion }, { "area_distortion", c.area_distortion },
+                       { "max_stretch", c.max_stretch }, { "min_area_scale", c.min_area_scale },
+                       { "max_area_scale", c.max_area_scale }, { "stretch_p95", c.stretch_p95 } });
+  return {
+    { "input", input },
+    { "faces", r.number_of_faces },
+    { "vertices", vertices },
+    { "method", method },
+    { "packer", packer },
+    { "input_changes", { { "polygons_triangulated", changes.polygons_triangulated },
+                         { "fan_triangulations", changes.fan_triangulations },
+                         { "faces_added", changes.faces_added },
+                         { "faces_removed", changes.faces_removed },
+                         { "vertices_added", changes.vertices_added },
+                         { "vertices_removed", changes.vertices_removed },
+                         { "pinched_vertices_split", changes.pinched_vertices_split } } },
+    { "segmentation", { { "voronoi_cells", r.number_of_voronoi_cells },
+                        { "refined_regions", r.number_of_refined_regions },
+                        { "charts", r.number_of_charts } } },
+    { "parameterization", { { "fallbacks", r.parameterization.number_of_fallbacks },
+                            { "split_patches", r.parameterization.number_of_split_patches },
+                            { "invalid_charts", r.parameterization.number_of_invalid_charts } } },
+    { "packing", { { "efficiency", r.packing.efficiency }, { "texels_per_unit", r.packing.texels_per_unit } } },
+    { "seconds", { { "read", read_seconds }, { "voronoi", r.voronoi_seconds }, { "refine", r.refine_seconds },
+                   { "merge", r.merge_seconds }, { "parameterization", r.parameterization_seconds },
+                   { "packing", r.packing_seconds }, { "total", r.total_seconds } } },
+    { "peak_rss_mb", peak_rss_mb() },
+    { "charts", charts } };
+}
+
+} // namespace disk_uv
+
+#endif // DISK_SEGMENTATION_EXAMPLES_ATLAS_REPORT_JSON_H

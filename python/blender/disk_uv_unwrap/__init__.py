@@ -1,0 +1,154 @@
+# Copyright (c) 2026 The Disk_segmentation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Blender add-on: UV unwrap of mesh objects by disk_uv (the Python module).
+
+Registers ``bpy.ops.uv.disk_uv_unwrap()``, "Disk UV Unwrap" in the UV menu
+of the 3D view (U in edit mode). It writes the active UV map (made if there
+is none) of every selected mesh object, or of every object in edit mode,
+unwrapping whole meshes. The polygons are kept: the unwrap runs on their
+triangles (Blender's loop triangles, nothing is changed in the mesh) and
+each triangle's corners write the UVs of their polygon's loops; a polygon
+whose triangles fell into two charts is moved whole into one (see
+disk_uv.atlas(face_groups=...)). Mode and selection are left as they were.
+
+Needs the disk_uv module where Blender's Python finds it
+(scripts/install_python.sh of the Disk_segmentation repository).
+"""
+
+bl_info = {
+    "name": "Disk UV Unwrap",
+    "author": "The Disk_segmentation authors",
+    "version": (0, 1, 0),
+    "blender": (3, 4, 0),
+    "location": "3D View > Edit Mode > UV > Disk UV Unwrap",
+    "description": "UV atlas through a segmentation into topological disks (disk_uv)",
+    "category": "UV",
+}
+
+import bpy
+import numpy
+from bpy.props import BoolProperty, EnumProperty, FloatProperty, IntProperty
+
+
+def mesh_arrays(obj):
+    """World-space vertices, loop triangles (vertex and loop indices) and their polygons."""
+    mesh = obj.data
+    mesh.calc_loop_triangles()
+    vertices = numpy.empty(len(mesh.vertices) * 3, dtype=numpy.float64)
+    mesh.vertices.foreach_get("co", vertices)
+    vertices = vertices.reshape(-1, 3)
+    # Scale and shear change the distortion the user sees; translation does not matter.
+    matrix = numpy.array(obj.matrix_world, dtype=numpy.float64)
+    vertices = vertices @ matrix[:3, :3].T
+    count = len(mesh.loop_triangles)
+    triangles = numpy.empty(count * 3, dtype=numpy.int64)
+    loops = numpy.empty(count * 3, dtype=numpy.int64)
+    polygons = numpy.empty(count, dtype=numpy.int64)
+    mesh.loop_triangles.foreach_get("vertices", triangles)
+    mesh.loop_triangles.foreach_get("loops", loops)
+    mesh.loop_triangles.foreach_get("polygon_index", polygons)
+    return vertices, triangles.reshape(-1, 3), loops.reshape(-1, 3), polygons
+
+
+def write_uvs(mesh, loops, corner_uvs):
+    layer = mesh.uv_layers.active
+    if layer is None:
+        layer = mesh.uv_layers.new(name="UVMap")
+        mesh.uv_layers.active = layer
+    uvs = numpy.zeros((len(mesh.loops), 2), dtype=numpy.float64)
+    # Every loop is a corner of some triangle of its polygon; a polygon kept
+    # whole gives all its triangles' copies of a loop the same UV.
+    uvs[loops.reshape(-1)] = corner_uvs.reshape(-1, 2)
+    layer.data.foreach_set("uv", uvs.reshape(-1).astype(numpy.float32))
+    mesh.update()
+
+
+class UV_OT_disk_uv_unwrap(bpy.types.Operator):
+    """UV atlas of the selected meshes through a segmentation into topological disks"""
+
+    bl_idname = "uv.disk_uv_unwrap"
+    bl_label = "Disk UV Unwrap"
+    bl_options = {"REGISTER", "UNDO"}
+
+    method: EnumProperty(
+        name="Method",
+        items=[("arap", "ARAP", "As-rigid-as-possible from a free-border conformal map (default)"),
+               ("conformal", "Conformal", "Discrete conformal map, border pinned on a circle"),
+               ("lscm", "LSCM", "Least squares conformal map, free border"),
+               ("mvc", "Mean value", "Mean value coordinates, border on a circle"),
+               ("tutte", "Tutte", "Barycentric map, border on a circle")],
+        default="arap")
+    max_angle_distortion: FloatProperty(
+        name="Angle distortion bound", description="Largest mean |log(s1/s2)| of a chart",
+        default=0.06, min=0.001, soft_max=1.0)
+    unbounded: BoolProperty(
+        name="No distortion bound", description="The paper's charts: fewer, more distorted", default=False)
+    margin: FloatProperty(name="Margin (texels)", description="Gap around every chart, in texels",
+                          default=2.0, min=0.0, soft_max=16.0)
+    resolution: IntProperty(name="Resolution", description="Texture side in texels the margin refers to",
+                            default=1024, min=16, max=65536)
+
+    @classmethod
+    def poll(cls, context):
+        return any(o.type == "MESH" for o in cls.target_objects(context))
+
+    @staticmethod
+    def target_objects(context):
+        if context.mode == "EDIT_MESH":
+            return list(context.objects_in_mode_unique_data)
+        return [o for o in context.selected_objects if o.type == "MESH"]
+
+    def execute(self, context):
+        try:
+            import disk_uv
+        except ImportError:
+            self.report({"ERROR"}, "the disk_uv Python module is not installed for Blender's Python "
+                                   "(run scripts/install_python.sh)")
+            return {"CANCELLED"}
+        objects = [o for o in self.target_objects(context) if o.type == "MESH"]
+        mode = context.mode
+        active = context.view_layer.objects.active
+        if mode == "EDIT_MESH":
+            bpy.ops.object.mode_set(mode="OBJECT")  # writes the edit-mode mesh to obj.data
+        done, failed = 0, []
+        try:
+            for obj in objects:
+                vertices, triangles, loops, polygons = mesh_arrays(obj)
+                if len(triangles) == 0:
+                    failed.append("%s: no faces" % obj.name)
+                    continue
+                try:
+                    atlas = disk_uv.atlas(vertices, triangles, method=self.method, unbounded=self.unbounded,
+                                          max_angle_distortion=self.max_angle_distortion,
+                                          padding=self.margin, resolution=self.resolution,
+                                          face_groups=polygons)
+                except ValueError as error:
+                    failed.append("%s: %s" % (obj.name, error))
+                    continue
+                write_uvs(obj.data, loops, atlas.uvs)
+                done += 1
+        finally:
+            if mode == "EDIT_MESH":
+                context.view_layer.objects.active = active
+                bpy.ops.object.mode_set(mode="EDIT")
+        for message in failed:
+            self.report({"WARNING"}, message)
+        if done == 0:
+            self.report({"ERROR"}, "no mesh unwrapped")
+            return {"CANCELLED"}
+        self.report({"INFO"}, "Disk UV Unwrap: %d mesh(es) unwrapped" % done)
+        return {"FINISHED"}
+
+
+def menu_entry(self, context):
+    self.layout.operator(UV_OT_disk_uv_unwrap.bl_idname)
+
+
+def register():
+    bpy.utils.register_class(UV_OT_disk_uv_unwrap)
+    bpy.types.VIEW3D_MT_uv_map.append(menu_entry)
+
+
+def unregister():
+    bpy.types.VIEW3D_MT_uv_map.remove(menu_entry)
+    bpy.utils.unregister_class(UV_OT_disk_uv_unwrap)

@@ -1,0 +1,180 @@
+# Copyright (c) 2026 The Disk_segmentation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""UV atlases of triangle meshes through a segmentation into topological disks.
+
+The same C++ headers as the ``disk_uv`` command-line tool, called on numpy
+arrays::
+
+    import disk_uv
+    vmapping, indices, uvs = disk_uv.parametrize(vertices, faces)   # as xatlas
+    atlas = disk_uv.atlas(vertices, faces, method="arap", resolution=2048)
+    atlas.uvs          # (F, 3, 2) per-corner UVs in [0, 1]
+    atlas.chart_ids    # (F,) chart of every face
+    atlas.report       # the same fields as ``disk_uv --report``
+
+The computation releases the GIL. Bad input raises ``ValueError`` naming the
+problem (shapes, dtypes, NaN, indices out of range, non-manifold meshes).
+"""
+
+import json
+import os
+
+from . import _disk_uv
+from ._files import write_atomically
+
+__all__ = ["Atlas", "atlas", "parametrize", "segment", "load", "save_obj", "save_glb"]
+
+METHODS = ("arap", "conformal", "lscm", "mvc", "tutte")
+
+
+class Atlas:
+    """The result of :func:`atlas`.
+
+    Attributes:
+        vertices, faces: the mesh the atlas belongs to (the arrays given).
+        uvs: (F, 3, 2) float64, the UV of each face's corners, in [0, 1].
+        chart_ids: (F,) uint32, the chart of each face (0 .. charts - 1).
+        report: dict with the fields of ``disk_uv --report`` (``charts``
+            holds one dict per chart with its method and distortion).
+        seconds: per-stage times (``report["seconds"]``).
+    """
+
+    def __init__(self, vertices, faces, uvs, chart_ids, report):
+        self.vertices = vertices
+        self.faces = faces
+        self.uvs = uvs
+        self.chart_ids = chart_ids
+        self.report = report
+
+    @property
+    def seconds(self):
+        return self.report["seconds"]
+
+    @property
+    def number_of_charts(self):
+        return self.report["segmentation"]["charts"]
+
+    def xatlas_arrays(self):
+        """(vmapping, indices, uvs) as ``xatlas.parametrize`` returns them."""
+        return _disk_uv.xatlas_arrays(self.faces, self.uvs, self.chart_ids)
+
+    def __repr__(self):
+        return "<disk_uv.Atlas: %d faces, %d charts, packing %.1f%%>" % (
+            len(self.chart_ids), self.number_of_charts, 100 * self.report["packing"]["efficiency"])
+
+
+def _atlas_options(method, max_angle_distortion, max_area_distortion, max_stretch, max_area_scale,
+                   max_stretch_p95, unbounded, rough_borders, resolution, padding, threads, seed, n, k,
+                   threshold, packer, max_chart_faces, use_fallback):
+    return {
+        "method": method, "max_angle_distortion": max_angle_distortion,
+        "max_area_distortion": max_area_distortion, "max_stretch": max_stretch,
+        "max_area_scale": max_area_scale, "max_stretch_p95": max_stretch_p95, "unbounded": bool(unbounded),
+        "rough_borders": bool(rough_borders), "resolution": resolution, "padding": padding, "threads": threads,
+        "seed": seed, "n": n, "k": k, "threshold": threshold, "packer": packer,
+        "max_chart_faces": max_chart_faces, "use_fallback": bool(use_fallback),
+    }
+
+
+def atlas(vertices, faces, method=_disk_uv.default_parameterization_method,
+          max_angle_distortion=_disk_uv.default_max_angle_distortion,
+          max_area_distortion=_disk_uv.default_max_area_distortion,
+          max_stretch=_disk_uv.default_max_stretch,
+          max_area_scale=_disk_uv.default_max_area_scale,
+          max_stretch_p95=_disk_uv.default_max_stretch_p95,
+          unbounded=False, rough_borders=False, resolution=1024, padding=2.0, threads=0, seed=None,
+          n=10, k=5, threshold=_disk_uv.default_merge_threshold, packer="tight",
+          max_chart_faces=_disk_uv.default_max_chart_faces, use_fallback=True, face_groups=None):
+    """UV atlas of a triangle mesh; the options are those of the ``disk_uv`` tool.
+
+    Args:
+        vertices: (N, 3) array of real numbers.
+        faces: (F, 3) array of vertex indices (counterclockwise, a manifold mesh).
+        method: per-chart parameterization: "arap" (default), "conformal"
+            (border pinned on a circle), "lscm", "mvc" or "tutte".
+        max_angle_distortion, max_area_distortion, max_stretch, max_area_scale,
+        max_stretch_p95: the distortion bound every chart meets (see the manual).
+        unbounded: no distortion bound (the paper's charts).
+        rough_borders: keep the saw-toothed chart borders of the paper.
+        resolution, padding: texture side and gap between charts, in texels.
+        threads: at most this many threads (0: all); the result does not depend on it.
+        seed: None (deterministic default first seed) or an integer seed.
+        n, k, threshold: the segmentation's seeds, subsamples and merge threshold.
+        packer: "tight" (one texel density) or "grid" (the paper's).
+        max_chart_faces: larger patches are split before parameterization.
+        use_fallback: redo invalid charts with other methods (else keep them, reported).
+        face_groups: None, or (F,) integers: faces with the same value are
+            one polygon of the caller's mesh (triangulated), which should
+            not be cut by a seam. A polygon split between two charts is
+            moved whole into one of them when both stay disks; those charts
+            are then parameterized and packed again without the distortion
+            bound. ``report["polygons"]`` counts the polygons moved and
+            those left across charts.
+
+    Returns:
+        an :class:`Atlas`.
+    """
+    options = _atlas_options(method, max_angle_distortion, max_area_distortion, max_stretch, max_area_scale,
+                             max_stretch_p95, unbounded, rough_borders, resolution, padding, threads, seed, n,
+                             k, threshold, packer, max_chart_faces, use_fallback)
+    options["face_groups"] = face_groups
+    result = _disk_uv.atlas(vertices, faces, options)
+    return Atlas(vertices, faces, result["uvs"], result["chart_ids"], json.loads(result["report"]))
+
+
+def parametrize(vertices, faces, **options):
+    """Drop-in for ``xatlas.parametrize(vertices, faces)``.
+
+    Returns ``(vmapping, indices, uvs)``: ``vmapping`` (M,) uint32 maps each
+    output vertex to its input vertex, ``indices`` (F, 3) uint32 are the
+    faces, in input order, over the output vertices, and ``uvs`` (M, 2)
+    float32 in [0, 1]. An input vertex on a seam gets one output vertex per
+    chart. ``options`` are those of :func:`atlas`.
+    """
+    return atlas(vertices, faces, **options).xatlas_arrays()
+
+
+def segment(vertices, faces, n=10, k=5, threshold=_disk_uv.default_merge_threshold):
+    """The paper's segmentation into topological disks: (F,) uint32 patch ids.
+
+    Joint farthest-point sampling of ``n`` seeds and geodesic Voronoi cells,
+    regions that are not disks re-sampled with ``k`` seeds, adjacent disks
+    merged while their union stays a disk and scores below ``threshold``.
+    """
+    return _disk_uv.segment(vertices, faces, {"n": n, "k": k, "threshold": threshold})
+
+
+def load(path, repair=False, triangulate=False):
+    """Reads a triangle mesh (.off .obj .ply .stl .ts) as (vertices, faces) arrays.
+
+    ``repair`` merges duplicated vertices, drops duplicated and degenerate
+    faces, orients the faces and cuts non-manifold edges and vertices;
+    ``triangulate`` splits polygons. Without them a mesh that needs either
+    is refused with a ``ValueError`` naming the problem.
+    """
+    path = os.fspath(path)
+    if not os.path.exists(path):
+        raise FileNotFoundError(path)
+    try:
+        return _disk_uv.load(path, bool(repair), bool(triangulate))
+    except ValueError as error:
+        # The tool's messages name its command-line flags.
+        raise ValueError(str(error).replace("--repair", "repair=True").replace("--triangulate", "triangulate=True")) \
+            from None
+
+
+def _save(format, path, atlas, overwrite):
+    if not isinstance(atlas, Atlas):
+        raise TypeError("expected a disk_uv.Atlas, not %s" % type(atlas).__name__)
+    data = _disk_uv.atlas_file(format, atlas.vertices, atlas.faces, atlas.uvs, atlas.chart_ids)
+    write_atomically(path, data, overwrite)
+
+
+def save_obj(path, atlas, overwrite=True):
+    """Writes the atlas as OBJ (per-corner ``vt``, one group per chart), atomically."""
+    _save("obj", path, atlas, overwrite)
+
+
+def save_glb(path, atlas, overwrite=True):
+    """Writes the atlas as binary glTF 2.0 (TEXCOORD_0), atomically."""
+    _save("glb", path, atlas, overwrite)

@@ -1,0 +1,584 @@
+// Copyright (c) 2026 The Disk_segmentation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+// _disk_uv: the Python binding's compiled part. The package disk_uv
+// (python/disk_uv/__init__.py) wraps it; keep the checks of user input here,
+// in one place, so that every entry point refuses bad arrays the same way.
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <CGAL/Disk_segmentation.h>
+#include <CGAL/Disk_segmentation/IO/write_atlas_GLB.h>
+#include <CGAL/Disk_segmentation/IO/write_atlas_OBJ.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Real_timer.h>
+#include <CGAL/Surface_mesh.h>
+
+#include "atlas_report_json.h"
+#include "mesh_io.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace py = pybind11;
+namespace DS = CGAL::Disk_segmentation;
+
+namespace {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
+typedef Kernel::Point_3 Point;
+typedef CGAL::Surface_mesh<Point> Mesh;
+typedef Mesh::Property_map<Mesh::Face_index, std::size_t> Patch_map;
+typedef Mesh::Property_map<Mesh::Halfedge_index, Kernel::Point_2> UV_map;
+
+typedef py::array_t<double, py::array::c_style | py::array::forcecast> Double_array;
+typedef py::array_t<std::int64_t, py::array::c_style | py::array::forcecast> Index_array;
+
+// Raised as ValueError by the translator registered below.
+struct Bad_argument : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+py::array as_numpy_array(const py::handle& object, const char* name)
+{
+  py::array a = py::array::ensure(object);
+  if(!a)
+    throw Bad_argument(std::string(name) + " must be a numpy array (or convertible to one)");
+  return a;
+}
+
+std::string shape_text(const py::array& a)
+{
+  std::string text = "(";
+  for(py::ssize_t d = 0; d < a.ndim(); ++d)
+    text += (d ? ", " : "") + std::to_string(a.shape(d));
+  return text + (a.ndim() == 1 ? ",)" : ")");
+}
+
+void check_shape(const py::array& a, const char* name, const char* expected)
+{
+  if(a.ndim() != 2 || a.shape(1) != 3)
+    throw Bad_argument(std::string(name) + " must have shape " + expected + ", not " + shape_text(a));
+}
+
+// The triangle soup of two arrays, checked as the C++ tool checks a file:
+// shapes and dtypes here, then indices, finiteness and manifoldness by
+// the tool's own soup check (pinched vertices are split, appending copies).
+struct Soup
+{
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t> > faces;
+  std::size_t input_vertices = 0;
+  std::size_t pinched_vertices_split = 0;
+};
+
+Soup soup_from_arrays(const py::handle& vertices_object, const py::handle& faces_object)
+{
+  const py::array vertices = as_numpy_array(vertices_object, "vertices");
+  const py::array faces = as_numpy_array(faces_object, "faces");
+  const char vk = vertices.dtype().kind(), fk = faces.dtype().kind();
+  if(vk != 'f' && vk != 'i' && vk != 'u')
+    throw Bad_argument("vertices must be an array of real numbers, not of dtype " +
+                       std::string(py::str(vertices.dtype())));
+  if(fk != 'i' && fk != 'u')
+    throw Bad_argument("faces must be an array of integers, not of dtype " + std::string(py::str(faces.dtype())));
+  check_shape(vertices, "vertices", "(N, 3)");
+  check_shape(faces, "faces", "(F, 3)");
+  if(fk == 'u' && faces.dtype().itemsize() >= 8)
+  {
+    // uint64 indices beyond int64 would wrap to negative ones below.
+    const auto big = py::array_t<std::uint64_t, py::array::c_style | py::array::forcecast>::ensure(faces);
+    for(py::ssize_t i = 0; i < big.size(); ++i)
+      if(big.data()[i] > std::uint64_t(std::numeric_limits<std::int64_t>::max()))
+        throw Bad_argument("faces: index " + std::to_string(big.data()[i]) + " is out of range");
+  }
+  const Double_array v = Double_array::ensure(vertices);
+  const Index_array f = Index_array::ensure(faces);
+  if(!v || !f)
+    throw Bad_argument("vertices and faces could not be read as numbers");
+
+  Soup soup;
+  const std::size_t nv = static_cast<std::size_t>(v.shape(0)), nf = static_cast<std::size_t>(f.shape(0));
+  soup.input_vertices = nv;
+  soup.points.reserve(nv);
+  for(std::size_t i = 0; i < nv; ++i)
+    soup.points.emplace_back(v.at(i, 0), v.at(i, 1), v.at(i, 2));
+  soup.faces.resize(nf);
+  for(std::size_t i = 0; i < nf; ++i)
+  {
+    soup.faces[i].resize(3);
+    for(std::size_t j = 0; j < 3; ++j)
+    {
+      const std::int64_t index = f.at(i, j);
+      if(index < 0)
+        throw Bad_argument("face #" + std::to_string(i) + " refers to vertex " + std::to_string(index) +
+                           "; indices must be non-negative");
+      soup.faces[i][j] = static_cast<std::size_t>(index);
+    }
+  }
+  std::string problem = disk_uv::triangle_soup_problem(soup.points, soup.faces, &soup.pinched_vertices_split);
+  if(!problem.empty())
+  {
+    // The check was written for files.
+    const std::string file = "the file has only";
+    const std::size_t at = problem.find(file);
+    if(at != std::string::npos)
+      problem.replace(at, file.size(), "vertices has only");
+    throw Bad_argument(problem);
+  }
+  return soup;
+}
+
+// The mesh keeps the soup's vertex and face order (vertex i, face i).
+void build_mesh(const Soup& soup, Mesh& mesh)
+{
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(soup.points, soup.faces, mesh);
+  if(mesh.number_of_faces() != soup.faces.size())
+    throw Bad_argument("the faces do not form a mesh");
+}
+
+// Integers: Python's and numpy's (anything with __index__), not bools.
+long long integer_option(const py::object& value, const char* name)
+{
+  if(py::isinstance<py::bool_>(value) || !PyIndex_Check(value.ptr()))
+    throw Bad_argument(std::string(name) + " must be an integer");
+  const py::int_ integer(py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr())));
+  const long long n = PyLong_AsLongLong(integer.ptr());
+  if(n == -1 && PyErr_Occurred())
+  {
+    PyErr_Clear();
+    throw Bad_argument(std::string(name) + " is too large");
+  }
+  return n;
+}
+
+std::size_t count_option(const py::dict& o, const char* name)
+{
+  const long long n = integer_option(o[name], name);
+  if(n < 0)
+    throw Bad_argument(std::string(name) + " must be non-negative, not " + std::to_string(n));
+  return static_cast<std::size_t>(n);
+}
+
+// Reals: Python's and numpy's numbers, not bools or strings.
+double real_option(const py::dict& o, const char* name)
+{
+  const py::object value = o[name];
+  if(py::isinstance<py::bool_>(value) || py::isinstance<py::str>(value) || !PyNumber_Check(value.ptr()))
+    throw Bad_argument(std::string(name) + " must be a number");
+  const double x = PyFloat_AsDouble(value.ptr());
+  if(x == -1. && PyErr_Occurred())
+  {
+    PyErr_Clear();
+    throw Bad_argument(std::string(name) + " must be a number");
+  }
+  return x;
+}
+
+DS::Distortion_bound bound_from(const py::dict& o, bool& unbounded)
+{
+  DS::Distortion_bound bound;
+  bound.max_angle_distortion = real_option(o, "max_angle_distortion");
+  bound.max_area_distortion = real_option(o, "max_area_distortion");
+  bound.max_stretch = real_option(o, "max_stretch");
+  bound.max_area_scale = real_option(o, "max_area_scale");
+  bound.max_stretch_p95 = real_option(o, "max_stretch_p95");
+  unbounded = o["unbounded"].cast<bool>();
+  return bound;
+}
+
+// Per-corner UVs and chart ids in the soup's face and corner order.
+py::dict atlas_result(const Soup& soup, const Mesh& mesh, const Patch_map& patch, const UV_map& uv,
+                      const std::string& report)
+{
+  const std::size_t nf = soup.faces.size();
+  py::array_t<double> corner_uvs({ py::ssize_t(nf), py::ssize_t(3), py::ssize_t(2) });
+  py::array_t<std::uint32_t> chart_ids = py::array_t<std::uint32_t>(static_cast<py::ssize_t>(nf));
+  auto u = corner_uvs.mutable_unchecked<3>();
+  auto c = chart_ids.mutable_unchecked<1>();
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    const Mesh::Face_index face(static_cast<Mesh::size_type>(f));
+    c(f) = static_cast<std::uint32_t>(patch[face]);
+    for(Mesh::Halfedge_index h : CGAL::halfedges_around_face(mesh.halfedge(face), mesh))
+      for(std::size_t j = 0; j < 3; ++j)
+        if(std::size_t(mesh.target(h)) == soup.faces[f][j])
+        {
+          u(f, j, 0) = uv[h].x();
+          u(f, j, 1) = uv[h].y();
+        }
+  }
+  py::dict result;
+  result["uvs"] = corner_uvs;
+  result["chart_ids"] = chart_ids;
+  result["report"] = report;
+  return result;
+}
+
+// Polygons of the caller's mesh (faces with the same group id) are made
+// whole: a polygon whose triangles fell into several charts is moved into
+// one of them when both charts stay disks (largest share first). Returns
+// the number of polygons moved and of those left split; ids are then
+// renumbered 0..P-1 in order of first face.
+std::pair<std::size_t, std::size_t> keep_polygons_whole(const Mesh& mesh, const std::vector<std::int64_t>& group,
+                                                        std::vector<std::size_t>& ids)
+{
+  std::unordered_map<std::int64_t, std::vector<std::size_t> > polygons;
+  std::vector<std::int64_t> order;
+  for(std::size_t f = 0; f < group.size(); ++f)
+  {
+    std::vector<std::size_t>& faces = polygons[group[f]];
+    if(faces.empty())
+      order.push_back(group[f]);
+    faces.push_back(f);
+  }
+  std::size_t patches = 0;
+  for(std::size_t id : ids)
+    patches = (std::max)(patches, id + 1);
+  std::vector<std::vector<Mesh::Face_index> > members(patches);
+  for(std::size_t f = 0; f < ids.size(); ++f)
+    members[ids[f]].push_back(Mesh::Face_index(static_cast<Mesh::size_type>(f)));
+  auto patch_faces = [&](std::size_t p) {
+    std::vector<Mesh::Face_index> faces;
+    for(Mesh::Face_index f : members[p])
+      if(ids[std::size_t(f)] == p)
+        faces.push_back(f);
+    return faces;
+  };
+  std::size_t moved = 0, left = 0;
+  for(std::int64_t g : order)
+  {
+    const std::vector<std::size_t>& faces = polygons[g];
+    std::vector<std::pair<std::size_t, std::size_t> > shares;  // (-count, patch) sorted: largest share first
+    for(std::size_t f : faces)
+    {
+      auto it = std::find_if(shares.begin(), shares.end(), [&](const auto& s) { return s.second == ids[f]; });
+      if(it == shares.end())
+        shares.emplace_back(1, ids[f]);
+      else
+        ++it->first;
+    }
+    if(shares.size() < 2)
+      continue;
+    std::sort(shares.begin(), shares.end(), [](const auto& a, const auto& b) {
+      return a.first != b.first ? a.first > b.first : a.second < b.second;
+    });
+    std::vector<std::size_t> old_ids;
+    for(std::size_t f : faces)
+      old_ids.push_back(ids[f]);
+    bool done = false;
+    for(const auto& target : shares)
+    {
+      for(std::size_t f : faces)
+      {
+        if(ids[f] != target.second)
+          members[target.second].push_back(Mesh::Face_index(static_cast<Mesh::size_type>(f)));
+        ids[f] = target.second;
+      }
+      bool disks = CGAL::Disk_segmentation::is_topological_disk(patch_faces(target.second), mesh);
+      for(const auto& source : shares)
+        if(disks && source.second != target.second)
+        {
+          const std::vector<Mesh::Face_index> rest = patch_faces(source.second);
+          disks = rest.empty() || CGAL::Disk_segmentation::is_topological_disk(rest, mesh);
+        }
+      if(disks)
+      {
+        done = true;
+        break;
+      }
+      for(std::size_t i = 0; i < faces.size(); ++i)
+        ids[faces[i]] = old_ids[i];
+    }
+    ++(done ? moved : left);
+  }
+  std::vector<std::size_t> renumber(patches, std::size_t(-1));
+  std::size_t next = 0;
+  for(std::size_t& id : ids)
+  {
+    if(renumber[id] == std::size_t(-1))
+      renumber[id] = next++;
+    id = renumber[id];
+  }
+  return std::make_pair(moved, left);
+}
+
+py::dict run_atlas(const py::handle& vertices, const py::handle& faces, const py::dict& o)
+{
+  Soup soup = soup_from_arrays(vertices, faces);
+  std::vector<std::int64_t> groups;
+  if(!o["face_groups"].is_none())
+  {
+    const Index_array g = Index_array::ensure(as_numpy_array(o["face_groups"], "face_groups"));
+    if(!g || g.ndim() != 1 || std::size_t(g.shape(0)) != soup.faces.size())
+      throw Bad_argument("face_groups must have shape (F,): one polygon id per face");
+    groups.assign(g.data(), g.data() + g.shape(0));
+  }
+  bool unbounded = false;
+  const DS::Distortion_bound bound = bound_from(o, unbounded);
+  const std::string method_name = o["method"].cast<std::string>();
+  const std::string packer_name = o["packer"].cast<std::string>();
+  const DS::Parameterization_method method = DS::parameterization_method_from_string(method_name);
+  DS::Packing_method packer;
+  if(packer_name == "tight") packer = DS::Packing_method::TIGHT;
+  else if(packer_name == "grid") packer = DS::Packing_method::GRID;
+  else throw Bad_argument("unknown packer '" + packer_name + "' (expected tight or grid)");
+  const std::size_t resolution = count_option(o, "resolution");
+  if(resolution > std::numeric_limits<unsigned int>::max())
+    throw Bad_argument("resolution is too large");
+  const std::size_t threads = count_option(o, "threads");
+  if(threads > 4096)
+    throw Bad_argument("threads must be at most 4096");
+  const double inf = std::numeric_limits<double>::infinity();
+  const auto settings =
+    DS::parameters::number_of_seeds(count_option(o, "n")).number_of_subsamples(count_option(o, "k"))
+      .merge_threshold(real_option(o, "threshold")).parameterization_method(method)
+      .use_fallback(o["use_fallback"].cast<bool>())
+      .max_angle_distortion(unbounded ? inf : bound.max_angle_distortion)
+      .max_area_distortion(unbounded ? inf : bound.max_area_distortion)
+      .max_stretch(unbounded ? inf : bound.max_stretch).max_area_scale(unbounded ? inf : bound.max_area_scale)
+      .max_stretch_p95(unbounded ? inf : bound.max_stretch_p95)
+      .smooth_borders(!o["rough_borders"].cast<bool>())
+      .max_chart_faces(count_option(o, "max_chart_faces")).packing_method(packer)
+      .texture_resolution(static_cast<unsigned int>(resolution)).padding_in_texels(real_option(o, "padding"))
+      .number_of_threads(static_cast<unsigned int>(threads));
+  DS::check_uv_atlas_parameters(settings);
+  const py::object seed = o["seed"];
+  const bool seeded = !seed.is_none();
+  unsigned int seed_value = 0;
+  if(seeded)
+  {
+    const long long value = integer_option(seed, "seed");
+    if(value < 0 || value > std::numeric_limits<unsigned int>::max())
+      throw Bad_argument("seed must be None or an integer between 0 and 4294967295");
+    seed_value = static_cast<unsigned int>(value);
+  }
+
+  Mesh mesh;
+  build_mesh(soup, mesh);
+  Patch_map patch = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:patch", 0).first;
+  UV_map uv = mesh.add_property_map<Mesh::Halfedge_index, Kernel::Point_2>("h:uv", Kernel::Point_2(0, 0)).first;
+  DS::Atlas_report report;
+  std::pair<std::size_t, std::size_t> polygon_moves(0, 0);
+  {
+    py::gil_scoped_release release;
+    if(seeded)
+      report = DS::uv_atlas(mesh, uv, settings.face_patch_map(patch).random_seed(seed_value));
+    else
+      report = DS::uv_atlas(mesh, uv, settings.face_patch_map(patch));
+    if(!groups.empty())
+    {
+      std::vector<std::size_t> ids(mesh.number_of_faces());
+      for(Mesh::Face_index f : mesh.faces())
+        ids[std::size_t(f)] = patch[f];
+      polygon_moves = keep_polygons_whole(mesh, groups, ids);
+      if(polygon_moves.first > 0)
+      {
+        // The moved charts are parameterized and packed again, without the
+        // bound: a split would cut polygons again.
+        for(Mesh::Face_index f : mesh.faces())
+          patch[f] = ids[std::size_t(f)];
+        CGAL::Real_timer timer;
+        timer.start();
+        const auto again = settings.max_angle_distortion(inf).max_area_distortion(inf).max_stretch(inf)
+                             .max_area_scale(inf).max_stretch_p95(inf);
+        report.parameterization = DS::parameterize_patches(mesh, patch, uv, again);
+        report.number_of_charts = report.parameterization.charts.size();
+        report.packing = DS::pack_patches(mesh, patch, uv, again);
+        report.total_seconds += timer.time();
+      }
+    }
+  }
+  disk_uv::Read_changes changes;
+  changes.pinched_vertices_split = soup.pinched_vertices_split;
+  nlohmann::json json =
+    disk_uv::atlas_report_json("<arrays>", mesh.number_of_vertices(), report, method_name, packer_name, 0., changes);
+  if(!groups.empty())
+    json["polygons"] = { { "moved_whole_into_one_chart", polygon_moves.first },
+                         { "left_across_charts", polygon_moves.second } };
+  return atlas_result(soup, mesh, patch, uv, json.dump());
+}
+
+py::array_t<std::uint32_t> run_segment(const py::handle& vertices, const py::handle& faces, const py::dict& o)
+{
+  Soup soup = soup_from_arrays(vertices, faces);
+  Mesh mesh;
+  build_mesh(soup, mesh);
+  Patch_map patch = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:patch", 0).first;
+  const auto settings = DS::parameters::number_of_seeds(count_option(o, "n"))
+                          .number_of_subsamples(count_option(o, "k"))
+                          .merge_threshold(real_option(o, "threshold"));
+  {
+    py::gil_scoped_release release;
+    DS::segment_into_disks(mesh, patch, settings);
+  }
+  py::array_t<std::uint32_t> ids(py::ssize_t(mesh.number_of_faces()));
+  auto out = ids.mutable_unchecked<1>();
+  for(Mesh::Face_index f : mesh.faces())
+    out(py::ssize_t(std::size_t(f))) = static_cast<std::uint32_t>(patch[f]);
+  return ids;
+}
+
+// xatlas's output from per-corner UVs: one output vertex per input vertex
+// and chart (and UV, should a chart hold a vertex twice), in the order the
+// faces first use them.
+py::tuple xatlas_arrays(const py::handle& faces_object, const py::handle& uvs_object, const py::handle& charts_object)
+{
+  const Index_array faces = Index_array::ensure(as_numpy_array(faces_object, "faces"));
+  const Double_array uvs = Double_array::ensure(as_numpy_array(uvs_object, "uvs"));
+  const Index_array charts = Index_array::ensure(as_numpy_array(charts_object, "chart_ids"));
+  if(!faces || !uvs || !charts || faces.ndim() != 2 || faces.shape(1) != 3 || uvs.ndim() != 3 ||
+     uvs.shape(0) != faces.shape(0) || uvs.shape(1) != 3 || uvs.shape(2) != 2 || charts.ndim() != 1 ||
+     charts.shape(0) != faces.shape(0))
+    throw Bad_argument("faces (F, 3), uvs (F, 3, 2) and chart_ids (F,) do not match");
+  const py::ssize_t nf = faces.shape(0);
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t> > outputs;  // (vertex, chart) -> output vertices
+  std::vector<std::uint32_t> vmapping;
+  std::vector<std::array<float, 2> > out_uvs;
+  py::array_t<std::uint32_t> indices({ nf, py::ssize_t(3) });
+  auto ix = indices.mutable_unchecked<2>();
+  for(py::ssize_t f = 0; f < nf; ++f)
+    for(py::ssize_t j = 0; j < 3; ++j)
+    {
+      const std::uint64_t vertex = std::uint64_t(faces.at(f, j)), chart = std::uint64_t(charts.at(f));
+      const std::array<float, 2> uv{ { float(uvs.at(f, j, 0)), float(uvs.at(f, j, 1)) } };
+      std::vector<std::uint32_t>& candidates = outputs[(vertex << 32) ^ chart];
+      std::uint32_t found = std::numeric_limits<std::uint32_t>::max();
+      for(std::uint32_t k : candidates)
+        if(out_uvs[k] == uv)
+          found = k;
+      if(found == std::numeric_limits<std::uint32_t>::max())
+      {
+        found = static_cast<std::uint32_t>(vmapping.size());
+        candidates.push_back(found);
+        vmapping.push_back(static_cast<std::uint32_t>(vertex));
+        out_uvs.push_back(uv);
+      }
+      ix(f, j) = found;
+    }
+  py::array_t<std::uint32_t> vm(py::ssize_t(vmapping.size()));
+  std::copy(vmapping.begin(), vmapping.end(), vm.mutable_data());
+  py::array_t<float> uv_array({ py::ssize_t(out_uvs.size()), py::ssize_t(2) });
+  auto ua = uv_array.mutable_unchecked<2>();
+  for(std::size_t k = 0; k < out_uvs.size(); ++k)
+  {
+    ua(py::ssize_t(k), 0) = out_uvs[k][0];
+    ua(py::ssize_t(k), 1) = out_uvs[k][1];
+  }
+  return py::make_tuple(vm, indices, uv_array);
+}
+
+// A mesh read by the C++ tool's readers, as (vertices, faces) arrays.
+py::tuple load_mesh(const std::string& path, bool repair, bool triangulate)
+{
+  disk_uv::Read_options options;
+  options.repair = repair;
+  options.triangulate = triangulate;
+  Mesh mesh;
+  {
+    py::gil_scoped_release release;
+    disk_uv::read_triangle_mesh(path, mesh, options);
+  }
+  py::array_t<double> vertices({ py::ssize_t(mesh.number_of_vertices()), py::ssize_t(3) });
+  py::array_t<std::int64_t> faces({ py::ssize_t(mesh.number_of_faces()), py::ssize_t(3) });
+  auto v = vertices.mutable_unchecked<2>();
+  auto f = faces.mutable_unchecked<2>();
+  for(Mesh::Vertex_index i : mesh.vertices())
+    for(int d = 0; d < 3; ++d)
+      v(py::ssize_t(std::size_t(i)), d) = mesh.point(i)[d];
+  for(Mesh::Face_index i : mesh.faces())
+  {
+    py::ssize_t j = 0;
+    for(Mesh::Vertex_index w : CGAL::vertices_around_face(mesh.halfedge(i), mesh))
+      f(py::ssize_t(std::size_t(i)), j++) = std::int64_t(std::size_t(w));
+  }
+  return py::make_tuple(vertices, faces);
+}
+
+// The atlas of arrays as the bytes of an OBJ or GLB file (the package
+// writes them atomically).
+py::bytes atlas_file(const std::string& format, const py::handle& vertices, const py::handle& faces,
+                     const py::handle& uvs_object, const py::handle& charts_object)
+{
+  Soup soup = soup_from_arrays(vertices, faces);
+  const Double_array uvs = Double_array::ensure(as_numpy_array(uvs_object, "uvs"));
+  const Index_array charts = Index_array::ensure(as_numpy_array(charts_object, "chart_ids"));
+  const py::ssize_t nf = py::ssize_t(soup.faces.size());
+  if(!uvs || !charts || uvs.ndim() != 3 || uvs.shape(0) != nf || uvs.shape(1) != 3 || uvs.shape(2) != 2 ||
+     charts.ndim() != 1 || charts.shape(0) != nf)
+    throw Bad_argument("the atlas does not match the mesh: uvs must have shape (F, 3, 2) and chart_ids (F,)");
+  Mesh mesh;
+  build_mesh(soup, mesh);
+  Patch_map patch = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:patch", 0).first;
+  UV_map uv = mesh.add_property_map<Mesh::Halfedge_index, Kernel::Point_2>("h:uv", Kernel::Point_2(0, 0)).first;
+  for(py::ssize_t f = 0; f < nf; ++f)
+  {
+    const Mesh::Face_index face(static_cast<Mesh::size_type>(f));
+    if(charts.at(f) < 0)
+      throw Bad_argument("chart_ids must be non-negative");
+    patch[face] = std::size_t(charts.at(f));
+    for(Mesh::Halfedge_index h : CGAL::halfedges_around_face(mesh.halfedge(face), mesh))
+      for(std::size_t j = 0; j < 3; ++j)
+        if(std::size_t(mesh.target(h)) == soup.faces[std::size_t(f)][j])
+          uv[h] = Kernel::Point_2(uvs.at(f, py::ssize_t(j), 0), uvs.at(f, py::ssize_t(j), 1));
+  }
+  std::ostringstream out;
+  if(format == "obj")
+    DS::IO::write_atlas_OBJ(out, mesh, patch, uv);
+  else if(format == "glb")
+    DS::IO::write_atlas_GLB(out, mesh, patch, uv);
+  else
+    throw Bad_argument("unknown format '" + format + "'");
+  return py::bytes(out.str());
+}
+
+} // namespace
+
+PYBIND11_MODULE(_disk_uv, m)
+{
+  m.doc() = "Compiled part of disk_uv (use the disk_uv package)";
+  py::register_exception_translator([](std::exception_ptr p) {
+    try
+    {
+      if(p)
+        std::rethrow_exception(p);
+    }
+    catch(const Bad_argument& e)
+    {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    }
+    catch(const DS::Input_error& e)
+    {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    }
+    catch(const disk_uv::Tool_error& e)
+    {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    }
+  });
+  m.def("atlas", &run_atlas, py::arg("vertices"), py::arg("faces"), py::arg("options"));
+  m.def("segment", &run_segment, py::arg("vertices"), py::arg("faces"), py::arg("options"));
+  m.def("xatlas_arrays", &xatlas_arrays, py::arg("faces"), py::arg("uvs"), py::arg("chart_ids"));
+  m.def("load", &load_mesh, py::arg("path"), py::arg("repair"), py::arg("triangulate"));
+  m.def("atlas_file", &atlas_file, py::arg("format"), py::arg("vertices"), py::arg("faces"), py::arg("uvs"),
+        py::arg("chart_ids"));
+  m.attr("default_parameterization_method") = DS::to_string(DS::default_parameterization_method);
+  m.attr("default_merge_threshold") = DS::regular_polygon_threshold(5);
+  m.attr("default_max_chart_faces") = DS::default_max_chart_faces;
+  const DS::Distortion_bound bound;
+  m.attr("default_max_angle_distortion") = bound.max_angle_distortion;
+  m.attr("default_max_area_distortion") = bound.max_area_distortion;
+  m.attr("default_max_stretch") = bound.max_stretch;
+  m.attr("default_max_area_scale") = bound.max_area_scale;
+  m.attr("default_max_stretch_p95") = bound.max_stretch_p95;
+}

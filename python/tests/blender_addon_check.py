@@ -1,0 +1,128 @@
+# Copyright (c) 2026 The Disk_segmentation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Headless test of the Blender add-on (ctest blender_addon):
+
+    blender -b --factory-startup --python-exit-code 1 --python blender_addon_check.py
+
+Loads a shipped mesh, a quad mesh and a mixed one, runs the operator on one
+object, on two at once and from edit mode, exports OBJ files with UVs and
+checks them with the independent checker (atlas_checks.py). Exits non-zero
+on the first failure. Environment as for the other Python tests.
+"""
+
+import os
+import sys
+import tempfile
+import traceback
+
+here = os.path.dirname(os.path.abspath(__file__))
+source = os.environ.get("DISK_UV_SOURCE", os.path.join(here, "..", ".."))
+# Blender ignores PYTHONPATH unless told otherwise.
+for entry in reversed(os.environ.get("PYTHONPATH", "").split(os.pathsep)):
+    if entry:
+        sys.path.insert(0, entry)
+sys.path.insert(0, here)
+sys.path.insert(0, os.path.join(source, "python", "blender"))
+
+import bpy  # noqa: E402
+
+import disk_uv  # noqa: E402
+import disk_uv_unwrap  # noqa: E402
+from atlas_checks import obj_atlas_problems  # noqa: E402
+
+DATA = os.environ.get("DISK_UV_DATA", os.path.join(source, "test", "Disk_segmentation", "data"))
+
+
+def check(condition, message):
+    if not condition:
+        raise AssertionError(message)
+
+
+def clear_scene():
+    bpy.ops.object.select_all(action="SELECT")
+    bpy.ops.object.delete()
+
+
+def add_shipped_mesh(name):
+    vertices, faces = disk_uv.load(os.path.join(DATA, name))
+    mesh = bpy.data.meshes.new(name)
+    mesh.from_pydata(vertices.tolist(), [], faces.tolist())
+    mesh.update()
+    obj = bpy.data.objects.new(name, mesh)
+    bpy.context.collection.objects.link(obj)
+    return obj
+
+
+def polygon_signature(obj):
+    return [tuple(p.vertices) for p in obj.data.polygons]
+
+
+def export_and_check(obj, folder, label):
+    path = os.path.join(folder, label + ".obj")
+    bpy.ops.object.select_all(action="DESELECT")
+    obj.select_set(True)
+    bpy.context.view_layer.objects.active = obj
+    bpy.ops.wm.obj_export(filepath=path, export_selected_objects=True, export_uv=True, export_normals=False,
+                          export_materials=False, export_triangulated_mesh=False, apply_modifiers=False,
+                          forward_axis="Y", up_axis="Z")
+    problems = obj_atlas_problems(path)
+    check(problems == [], "%s: %s" % (label, problems))
+    print("checked", label, "faces", len(obj.data.polygons))
+
+
+def run():
+    check(hasattr(bpy.ops.uv, "disk_uv_unwrap"), "operator not registered")
+    check(any(getattr(f, "__name__", "") == "menu_entry" for f in bpy.types.VIEW3D_MT_uv_map._dyn_ui_initialize()),
+          "no entry in the UV menu")
+    folder = tempfile.mkdtemp(prefix="disk_uv_blender_")
+    clear_scene()
+
+    # One shipped triangle mesh, in object mode.
+    elephant = add_shipped_mesh("elephant.off")
+    bpy.ops.object.select_all(action="DESELECT")
+    elephant.select_set(True)
+    bpy.context.view_layer.objects.active = elephant
+    check(bpy.ops.uv.disk_uv_unwrap() == {"FINISHED"}, "unwrap of the elephant failed")
+    check(elephant.data.uv_layers.active is not None, "no UV map written")
+    export_and_check(elephant, folder, "elephant")
+
+    # Two quad objects at once (a torus: all quads, genus 1; a UV sphere:
+    # quads and triangle fans), their polygons kept.
+    bpy.ops.mesh.primitive_torus_add(major_segments=32, minor_segments=12)
+    torus = bpy.context.active_object
+    bpy.ops.mesh.primitive_uv_sphere_add(segments=24, ring_count=12, location=(5, 0, 0), scale=(1, 2, 1))
+    sphere = bpy.context.active_object
+    before = {o.name: polygon_signature(o) for o in (torus, sphere)}
+    bpy.ops.object.select_all(action="DESELECT")
+    torus.select_set(True)
+    sphere.select_set(True)
+    bpy.context.view_layer.objects.active = torus
+    check(bpy.ops.uv.disk_uv_unwrap(method="arap", margin=4.0, resolution=512) == {"FINISHED"},
+          "unwrap of two objects failed")
+    for obj in (torus, sphere):
+        check(polygon_signature(obj) == before[obj.name], "%s: polygons changed" % obj.name)
+        check(all(len(p.vertices) >= 3 for p in obj.data.polygons), "bad polygons")
+    check(sorted(o.name for o in bpy.context.selected_objects) == sorted([torus.name, sphere.name]),
+          "selection changed")
+    check(any(len(p.vertices) == 4 for p in torus.data.polygons), "the torus has no quads")
+    export_and_check(torus, folder, "torus")
+    export_and_check(sphere, folder, "sphere")
+
+    # From edit mode: the mode is restored.
+    bpy.ops.object.select_all(action="DESELECT")
+    torus.select_set(True)
+    bpy.context.view_layer.objects.active = torus
+    bpy.ops.object.mode_set(mode="EDIT")
+    check(bpy.ops.uv.disk_uv_unwrap(unbounded=True) == {"FINISHED"}, "unwrap in edit mode failed")
+    check(bpy.context.mode == "EDIT_MESH", "edit mode not restored")
+    bpy.ops.object.mode_set(mode="OBJECT")
+    export_and_check(torus, folder, "torus_unbounded")
+    print("blender_addon_check: all checks passed")
+
+
+try:
+    disk_uv_unwrap.register()
+    run()
+except Exception:
+    traceback.print_exc()
+    sys.exit(1)

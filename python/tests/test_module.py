@@ -1,0 +1,235 @@
+# Copyright (c) 2026 The Disk_segmentation authors.
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Tests of the disk_uv Python module (ctest python_module).
+
+Environment (set by CMake): PYTHONPATH to the built package, DISK_UV_TOOL
+the C++ tool, DISK_UV_DATA the shipped meshes, DISK_UV_SOURCE the repository.
+"""
+
+import os
+import subprocess
+import sys
+import threading
+
+import numpy
+import pytest
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+import disk_uv  # noqa: E402
+from atlas_checks import atlas_problems, components, euler_characteristic, read_obj  # noqa: E402
+
+DATA = os.environ.get("DISK_UV_DATA", os.path.join(os.path.dirname(__file__), "../../test/Disk_segmentation/data"))
+TOOL = os.environ.get("DISK_UV_TOOL")
+
+
+def mesh(name):
+    return disk_uv.load(os.path.join(DATA, name))
+
+
+def torus_quads(n=24, m=12):
+    """A torus of n x m quads, each split into two triangles; group = quad id."""
+    u, v = numpy.meshgrid(numpy.arange(n), numpy.arange(m), indexing="ij")
+    a, b = 2 * numpy.pi * u / n, 2 * numpy.pi * v / m
+    vertices = numpy.stack([(2 + numpy.cos(b)) * numpy.cos(a), (2 + numpy.cos(b)) * numpy.sin(a),
+                            numpy.sin(b)], axis=-1).reshape(-1, 3)
+    index = lambda i, j: (i % n) * m + (j % m)
+    faces, groups = [], []
+    for i in range(n):
+        for j in range(m):
+            q = [index(i, j), index(i + 1, j), index(i + 1, j + 1), index(i, j + 1)]
+            faces += [[q[0], q[1], q[2]], [q[0], q[2], q[3]]]
+            groups += [i * m + j] * 2
+    return vertices, numpy.array(faces), numpy.array(groups)
+
+
+def test_parametrize_has_the_semantics_of_xatlas():
+    vertices, faces = mesh("elephant.off")
+    vmapping, indices, uvs = disk_uv.parametrize(vertices, faces)
+    assert vmapping.dtype == numpy.uint32 and indices.dtype == numpy.uint32 and uvs.dtype == numpy.float32
+    assert vmapping.ndim == 1 and indices.shape == faces.shape and uvs.shape == (len(vmapping), 2)
+    # Every output face is its input face over output vertices.
+    assert (vmapping[indices] == faces).all()
+    # Output vertices are used, and seams duplicate vertices.
+    assert len(numpy.unique(indices)) == len(vmapping) > len(vertices)
+    assert atlas_problems(uvs[indices], indices) == []
+    # Each chart (component over output vertices) is one chart id of the atlas.
+    atlas = disk_uv.atlas(vertices, faces)
+    labels = components(indices)
+    for label in numpy.unique(labels):
+        assert len(numpy.unique(atlas.chart_ids[labels == label])) == 1
+    assert len(numpy.unique(labels)) == atlas.number_of_charts
+
+
+@pytest.mark.skipif(TOOL is None, reason="DISK_UV_TOOL not set")
+@pytest.mark.parametrize("name", ["elephant.off", "knot1.off", "eight.off"])
+def test_same_atlas_as_the_command_line_tool(tmp_path, name):
+    ids_path, obj_path = tmp_path / "ids.txt", tmp_path / "atlas.obj"
+    subprocess.run([TOOL, os.path.join(DATA, name), "--patch-ids", str(ids_path), "-o", str(obj_path), "-q"],
+                   check=True)
+    vertices, faces = mesh(name)
+    atlas = disk_uv.atlas(vertices, faces)
+    tool_ids = numpy.loadtxt(ids_path, dtype=numpy.int64)
+    assert (tool_ids == atlas.chart_ids).all()
+    positions, tool_uvs, tool_faces = read_obj(obj_path)
+    assert len(tool_faces) == len(faces)
+    for f, (vs, ts) in enumerate(tool_faces):
+        assert vs == list(faces[f])
+        assert numpy.allclose(tool_uvs[ts], atlas.uvs[f], atol=1e-9)
+
+
+def test_result_does_not_depend_on_threads():
+    vertices, faces = mesh("knot1.off")
+    one, two = disk_uv.atlas(vertices, faces, threads=1), disk_uv.atlas(vertices, faces, threads=2)
+    assert (one.chart_ids == two.chart_ids).all() and (one.uvs == two.uvs).all()
+
+
+def test_report_and_options():
+    vertices, faces = mesh("elephant.off")
+    atlas = disk_uv.atlas(vertices, faces, method="lscm", resolution=512, padding=4)
+    report = atlas.report
+    assert report["method"] == "lscm" and report["faces"] == len(faces)
+    assert len(report["charts"]) == atlas.number_of_charts == atlas.chart_ids.max() + 1
+    assert set(atlas.seconds) >= {"voronoi", "refine", "merge", "parameterization", "packing", "total"}
+    bounded = disk_uv.atlas(vertices, faces, max_angle_distortion=0.03)
+    assert all(c["angle_distortion"] <= 0.03 for c in bounded.report["charts"])
+    loose = disk_uv.atlas(vertices, faces, unbounded=True, rough_borders=True)
+    assert loose.number_of_charts < bounded.number_of_charts
+
+
+def test_segment_gives_disks_of_the_paper():
+    vertices, faces = mesh("eight.off")
+    ids = disk_uv.segment(vertices, faces, n=6, k=5)
+    assert ids.shape == (len(faces),) and ids.dtype == numpy.uint32
+    for p in numpy.unique(ids):
+        patch = faces[ids == p]
+        assert euler_characteristic(patch) == 1
+        assert len(numpy.unique(components(patch))) == 1
+    assert (disk_uv.segment(vertices, faces, n=6, k=5) == ids).all()
+
+
+def test_polygons_stay_whole_when_face_groups_are_given():
+    vertices, faces, groups = torus_quads()
+    atlas = disk_uv.atlas(vertices, faces, face_groups=groups)
+    across = sum(len(numpy.unique(atlas.chart_ids[groups == g])) > 1 for g in numpy.unique(groups))
+    assert across == atlas.report["polygons"]["left_across_charts"] == 0
+    assert atlas_problems(list(atlas.uvs)) == []
+
+
+def test_gil_is_released_during_the_computation():
+    vertices, faces = mesh("elephant.off")
+    done = threading.Event()
+    counts = {"while_running": 0}
+
+    def unwrap():
+        disk_uv.atlas(vertices, faces, threads=1)
+        done.set()
+
+    worker = threading.Thread(target=unwrap)
+    worker.start()
+    # Python code runs in this thread only if the other releases the GIL.
+    while not done.is_set():
+        counts["while_running"] += 1
+    worker.join()
+    assert counts["while_running"] > 1000
+
+
+def test_save_obj_and_glb_write_whole_files(tmp_path):
+    vertices, faces = mesh("knot1.off")
+    atlas = disk_uv.atlas(vertices, faces)
+    disk_uv.save_obj(tmp_path / "a.obj", atlas)
+    disk_uv.save_glb(tmp_path / "a.glb", atlas)
+    positions, uvs, obj_faces = read_obj(tmp_path / "a.obj")
+    assert numpy.allclose(positions, vertices)
+    assert atlas_problems([uvs[t] for _, t in obj_faces], [t for _, t in obj_faces]) == []
+    assert (tmp_path / "a.glb").read_bytes()[:4] == b"glTF"
+    (tmp_path / "keep.obj").write_text("mine")
+    with pytest.raises(FileExistsError):
+        disk_uv.save_obj(tmp_path / "keep.obj", atlas, overwrite=False)
+    assert (tmp_path / "keep.obj").read_text() == "mine"
+    with pytest.raises(IsADirectoryError):
+        disk_uv.save_obj(tmp_path, atlas)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["a.glb", "a.obj", "keep.obj"]
+
+
+def test_load_names_problems_and_suggests_options(tmp_path):
+    with pytest.raises(FileNotFoundError):
+        disk_uv.load(tmp_path / "missing.off")
+    bad = tmp_path / "bad.off"
+    bad.write_text("OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 1 2\n")
+    with pytest.raises(ValueError, match="repair=True"):
+        disk_uv.load(bad)
+    vertices, faces = disk_uv.load(bad, repair=True)
+    assert len(faces) == 1
+    quad = tmp_path / "quad.off"
+    quad.write_text("OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n")
+    with pytest.raises(ValueError, match="triangulate=True"):
+        disk_uv.load(quad)
+    assert disk_uv.load(quad, triangulate=True)[1].shape == (2, 3)
+
+
+@pytest.mark.parametrize("change, message", [
+    (lambda v, f: (v[:, :2], f), "shape"),
+    (lambda v, f: (v, f.astype(numpy.float64)), "integers"),
+    (lambda v, f: (v.astype(str), f), "real numbers"),
+    (lambda v, f: (v, f[:, :2]), "shape"),
+    (lambda v, f: (v, f + len(v)), "refers to vertex"),
+    (lambda v, f: (v, -f), "non-negative"),
+    (lambda v, f: (numpy.where(v > 0.2, numpy.nan, v), f), "non-finite"),
+    (lambda v, f: (v, numpy.vstack([f, f[:1]])), "duplicates"),
+    (lambda v, f: (v, f[:, ::-1][:1].tolist() + f[1:].tolist()), "orient"),
+    (lambda v, f: (v, numpy.zeros((0, 3), dtype=numpy.int64)), "no face"),
+    (lambda v, f: ("not an array", f), "real numbers"),
+])
+def test_bad_arrays_raise_value_error(change, message):
+    vertices, faces = mesh("eight.off")
+    with pytest.raises(ValueError, match=message):
+        disk_uv.atlas(*change(vertices, faces))
+
+
+@pytest.mark.parametrize("options, message", [
+    ({"method": "foo"}, "unknown parameterization method"),
+    ({"packer": "foo"}, "unknown packer"),
+    ({"resolution": -1}, "resolution"),
+    ({"threads": -2}, "threads"),
+    ({"n": 0}, "seed"),
+    ({"max_angle_distortion": -1.0}, "angle"),
+    ({"padding": float("nan")}, "padding"),
+    ({"seed": -1}, "seed"),
+    ({"face_groups": numpy.zeros(3)}, "face_groups"),
+])
+def test_bad_options_raise_value_error(options, message):
+    vertices, faces = mesh("eight.off")
+    with pytest.raises(ValueError, match=message):
+        disk_uv.atlas(vertices, faces, **options)
+
+
+def test_numpy_only_example_runs(tmp_path):
+    source = os.environ.get("DISK_UV_SOURCE", os.path.join(os.path.dirname(__file__), "../.."))
+    out = tmp_path / "out.obj"
+    subprocess.run([sys.executable, os.path.join(source, "python/examples/unwrap_obj.py"),
+                    os.path.join(DATA, "elephant.off"), str(out)], check=True)
+    positions, uvs, obj_faces = read_obj(out)
+    assert atlas_problems([uvs[t] for _, t in obj_faces], [t for _, t in obj_faces]) == []
+
+
+def test_the_independent_checker_finds_what_it_should():
+    square = [numpy.array([[0.1, 0.1], [0.4, 0.1], [0.4, 0.4]]), numpy.array([[0.1, 0.1], [0.4, 0.4], [0.1, 0.4]])]
+    assert atlas_problems(square, [[0, 1, 2], [0, 2, 3]]) == []
+    assert any("flipped" in p for p in atlas_problems([square[0][::-1], square[1]]))
+    assert any("covered twice" in p for p in atlas_problems([square[0], square[0] + 0.01]))
+    assert any("outside" in p for p in atlas_problems([square[0] + 0.7]))
+    assert any("degenerate" in p for p in atlas_problems([square[0], numpy.array([[0.5, 0.5]] * 3)]))
+    # Two triangles glued along two edges (a cone's strip): not a disk.
+    assert any("not a disk" in p for p in atlas_problems(square, [[0, 1, 2], [0, 2, 1]]))
+
+
+def test_numpy_scalars_are_accepted_as_options():
+    vertices, faces = mesh("eight.off")
+    atlas = disk_uv.atlas(vertices.astype(numpy.float32), faces.astype(numpy.int32), resolution=numpy.int64(512),
+                          padding=numpy.float32(3), threads=numpy.uint8(1), seed=numpy.int64(7))
+    assert atlas_problems(list(atlas.uvs)) == []
+    with pytest.raises(ValueError, match="integer"):
+        disk_uv.atlas(vertices, faces, resolution=512.0)
+    with pytest.raises(ValueError, match="number"):
+        disk_uv.atlas(vertices, faces, padding="2")
