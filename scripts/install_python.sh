@@ -5,7 +5,8 @@
 #   - builds build/python/disk_uv (the package and its compiled part),
 #   - copies it to the system's site-packages (/usr/local/lib/python3.X/
 #     dist-packages as root, the user's site-packages otherwise),
-#   - copies the add-on to Blender's user add-on folder and enables it.
+#   - copies the add-on to Blender's user add-on folder and enables it, and
+#     writes build/disk_uv_unwrap.zip (Blender: Preferences > Add-ons > Install).
 # Options: --no-blender skips the add-on.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -33,6 +34,16 @@ cp -r "$build/python/disk_uv" "$site/disk_uv.new"
 rm -rf "$site/disk_uv"
 mv "$site/disk_uv.new" "$site/disk_uv"
 (cd / && "$python" -c 'import disk_uv, sys; print("disk_uv installed in", disk_uv.__path__[0])')
+
+"$python" - "$root/python/blender" "$build/disk_uv_unwrap.zip" <<'PY'
+import glob, os, sys, zipfile
+folder, target = sys.argv[1], sys.argv[2]
+with zipfile.ZipFile(target + ".part", "w", zipfile.ZIP_DEFLATED) as z:
+    for path in sorted(glob.glob(os.path.join(folder, "disk_uv_unwrap", "*.py"))):
+        z.write(path, os.path.relpath(path, folder))
+os.replace(target + ".part", target)
+print("Blender add-on archive:", target)
+PY
 
 if [ "$blender_addon" = 1 ] && command -v blender >/dev/null 2>&1; then
   # With the user's preferences loaded (no --factory-startup), so that
