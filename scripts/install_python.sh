@@ -49,15 +49,13 @@ if [ "$blender_addon" = 1 ] && command -v blender >/dev/null 2>&1; then
   # With the user's preferences loaded (no --factory-startup), so that
   # saving them keeps everything else the user set.
   if ! output=$(blender -b --python-exit-code 1 --python-expr "
-import bpy, shutil, os
-source = os.path.join('$root', 'python', 'blender', 'disk_uv_unwrap')
-target = os.path.join(bpy.utils.user_resource('SCRIPTS', path='addons', create=True), 'disk_uv_unwrap')
-shutil.rmtree(target, ignore_errors=True)
-shutil.copytree(source, target)
+import bpy, addon_utils
+bpy.ops.preferences.addon_install(overwrite=True, filepath='$build/disk_uv_unwrap.zip')
 bpy.ops.preferences.addon_enable(module='disk_uv_unwrap')
 bpy.ops.wm.save_userpref()
-import disk_uv
-print('Blender add-on installed in', target, 'and enabled; disk_uv found at', disk_uv.__path__[0])
+import disk_uv, disk_uv_unwrap
+assert addon_utils.check('disk_uv_unwrap')[1], 'the add-on is not enabled'
+print('Blender add-on installed in', disk_uv_unwrap.__file__, 'and enabled; disk_uv found at', disk_uv.__path__[0])
 " 2>&1); then
     echo "$output" >&2
     echo "error: the Blender add-on could not be installed" >&2
