@@ -190,6 +190,8 @@ def run_batch(source, output_dir, workers=None, scheduler=None, glb=False, retry
     bar = Progress(len(meshes), progress)
     for row in rows.values():
         bar.update(row)
+    # Largest files first, so that the last task to finish is a small one.
+    todo.sort(key=lambda item: (-os.path.getsize(item[1]) if os.path.exists(item[1]) else 0, item[0]))
     if todo:
         cluster = None
         if scheduler:
