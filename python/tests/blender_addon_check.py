@@ -5,8 +5,9 @@
     blender -b --factory-startup --python-exit-code 1 --python blender_addon_check.py
 
 Loads a shipped mesh, a quad mesh and a mixed one, runs the operator on one
-object, on two at once and from edit mode, exports OBJ files with UVs and
-checks them with the independent checker (atlas_checks.py). Exits non-zero
+object, on two at once, from edit mode and on selected faces only, exports
+OBJ files with UVs and checks them with the independent checker
+(atlas_checks.py). Exits non-zero
 on the first failure. Environment as for the other Python tests.
 """
 
@@ -25,10 +26,11 @@ sys.path.insert(0, here)
 sys.path.insert(0, os.path.join(source, "python", "blender"))
 
 import bpy  # noqa: E402
+import numpy  # noqa: E402
 
 import disk_uv  # noqa: E402
 import disk_uv_unwrap  # noqa: E402
-from atlas_checks import obj_atlas_problems  # noqa: E402
+from atlas_checks import atlas_problems, obj_atlas_problems  # noqa: E402
 
 DATA = os.environ.get("DISK_UV_DATA", os.path.join(source, "test", "Disk_segmentation", "data"))
 
@@ -51,6 +53,12 @@ def add_shipped_mesh(name):
     obj = bpy.data.objects.new(name, mesh)
     bpy.context.collection.objects.link(obj)
     return obj
+
+
+def loop_uvs(mesh):
+    uvs = numpy.empty(len(mesh.loops) * 2, dtype=numpy.float32)
+    mesh.uv_layers.active.data.foreach_get("uv", uvs)
+    return uvs.reshape(-1, 2)
 
 
 def polygon_signature(obj):
@@ -117,6 +125,33 @@ def run():
     check(bpy.context.mode == "EDIT_MESH", "edit mode not restored")
     bpy.ops.object.mode_set(mode="OBJECT")
     export_and_check(torus, folder, "torus_unbounded")
+
+    # Edit mode with part of the faces selected: only their UVs change.
+    mesh = torus.data
+    before_uvs = loop_uvs(mesh)
+    half = len(mesh.polygons) // 2
+    for p in mesh.polygons:
+        p.select = p.index < half
+    for v in mesh.vertices:
+        v.select = False
+    for p in mesh.polygons[:half]:
+        for v in p.vertices:
+            mesh.vertices[v].select = True
+    bpy.context.tool_settings.mesh_select_mode = (False, False, True)
+    bpy.ops.object.mode_set(mode="EDIT")
+    check(bpy.ops.uv.disk_uv_unwrap() == {"FINISHED"}, "unwrap of selected faces failed")
+    bpy.ops.object.mode_set(mode="OBJECT")
+    after_uvs = loop_uvs(mesh)
+    selected = [p for p in mesh.polygons if p.select]
+    check(0 < len(selected) < len(mesh.polygons), "the selection is not a part of the mesh")
+    in_selection = numpy.zeros(len(mesh.loops), dtype=bool)
+    for p in selected:
+        in_selection[list(p.loop_indices)] = True
+    check((after_uvs[~in_selection] == before_uvs[~in_selection]).all(), "unselected faces lost their UVs")
+    check(not numpy.allclose(after_uvs[in_selection], before_uvs[in_selection]), "selected faces not unwrapped")
+    problems = atlas_problems([after_uvs[list(p.loop_indices)] for p in selected])
+    check(problems == [], "selected faces: %s" % problems)
+    print("checked selected faces", len(selected))
     print("blender_addon_check: all checks passed")
 
 

@@ -4,8 +4,9 @@
 
 Registers ``bpy.ops.uv.disk_uv_unwrap()``, "Disk UV Unwrap" in the UV menu
 of the 3D view (U in edit mode). It writes the active UV map (made if there
-is none) of every selected mesh object, or of every object in edit mode,
-unwrapping whole meshes. The polygons are kept: the unwrap runs on their
+is none) of every selected mesh object in object mode (whole meshes), or of
+the selected faces of every object in edit mode (the other faces keep their
+UVs). The polygons are kept: the unwrap runs on their
 triangles (Blender's loop triangles, nothing is changed in the mesh) and
 each triangle's corners write the UVs of their polygon's loops; a polygon
 whose triangles fell into two charts is moved whole into one (see
@@ -30,8 +31,12 @@ import numpy
 from bpy.props import BoolProperty, EnumProperty, FloatProperty, IntProperty
 
 
-def mesh_arrays(obj):
-    """World-space vertices, loop triangles (vertex and loop indices) and their polygons."""
+def mesh_arrays(obj, selected_only=False):
+    """World-space vertices, loop triangles (vertex and loop indices) and their polygons.
+
+    With `selected_only`, only the triangles of selected polygons, over the
+    vertices they use (renumbered).
+    """
     mesh = obj.data
     mesh.calc_loop_triangles()
     vertices = numpy.empty(len(mesh.vertices) * 3, dtype=numpy.float64)
@@ -47,7 +52,15 @@ def mesh_arrays(obj):
     mesh.loop_triangles.foreach_get("vertices", triangles)
     mesh.loop_triangles.foreach_get("loops", loops)
     mesh.loop_triangles.foreach_get("polygon_index", polygons)
-    return vertices, triangles.reshape(-1, 3), loops.reshape(-1, 3), polygons
+    triangles, loops = triangles.reshape(-1, 3), loops.reshape(-1, 3)
+    if selected_only:
+        selected = numpy.empty(len(mesh.polygons), dtype=bool)
+        mesh.polygons.foreach_get("select", selected)
+        keep = selected[polygons]
+        triangles, loops, polygons = triangles[keep], loops[keep], polygons[keep]
+        used, triangles = numpy.unique(triangles, return_inverse=True)
+        vertices, triangles = vertices[used], triangles.reshape(-1, 3)
+    return vertices, triangles, loops, polygons
 
 
 def write_uvs(mesh, loops, corner_uvs):
@@ -55,7 +68,10 @@ def write_uvs(mesh, loops, corner_uvs):
     if layer is None:
         layer = mesh.uv_layers.new(name="UVMap")
         mesh.uv_layers.active = layer
-    uvs = numpy.zeros((len(mesh.loops), 2), dtype=numpy.float64)
+    # Loops outside `loops` (faces not unwrapped) keep their UVs.
+    uvs = numpy.empty(len(mesh.loops) * 2, dtype=numpy.float32)
+    layer.data.foreach_get("uv", uvs)
+    uvs = uvs.reshape(-1, 2)
     # Every loop is a corner of some triangle of its polygon; a polygon kept
     # whole gives all its triangles' copies of a loop the same UV.
     uvs[loops.reshape(-1)] = corner_uvs.reshape(-1, 2)
@@ -113,9 +129,9 @@ class UV_OT_disk_uv_unwrap(bpy.types.Operator):
         done, failed = 0, []
         try:
             for obj in objects:
-                vertices, triangles, loops, polygons = mesh_arrays(obj)
+                vertices, triangles, loops, polygons = mesh_arrays(obj, selected_only=(mode == "EDIT_MESH"))
                 if len(triangles) == 0:
-                    failed.append("%s: no faces" % obj.name)
+                    failed.append("%s: no %sfaces" % (obj.name, "selected " if mode == "EDIT_MESH" else ""))
                     continue
                 try:
                     atlas = disk_uv.atlas(vertices, triangles, method=self.method, unbounded=self.unbounded,
