@@ -230,7 +230,7 @@ def add_atlas_arguments(parser):
     d = disk_uv._disk_uv
     group = parser.add_argument_group("atlas options (as the disk_uv tool's)")
     group.add_argument("--method", default=d.default_parameterization_method,
-                       choices=("arap", "conformal", "lscm", "mvc", "tutte"))
+                       choices=disk_uv.METHODS)
     group.add_argument("--resolution", type=int, default=1024)
     group.add_argument("--padding", type=float, default=2.0)
     group.add_argument("--max-angle-distortion", type=float, default=d.default_max_angle_distortion)

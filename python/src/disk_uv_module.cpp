@@ -197,6 +197,18 @@ DS::Distortion_bound bound_from(const py::dict& o, bool& unbounded)
   return bound;
 }
 
+// Calls visit(h, j) for each halfedge h of face f whose target is corner j
+// of the soup's face f: the mesh keeps the soup's vertex and face order.
+template <typename Visit>
+void for_each_corner(const Mesh& mesh, const Soup& soup, std::size_t f, const Visit& visit)
+{
+  const Mesh::Face_index face(static_cast<Mesh::size_type>(f));
+  for(Mesh::Halfedge_index h : CGAL::halfedges_around_face(mesh.halfedge(face), mesh))
+    for(std::size_t j = 0; j < 3; ++j)
+      if(std::size_t(mesh.target(h)) == soup.faces[f][j])
+        visit(h, j);
+}
+
 // Per-corner UVs and chart ids in the soup's face and corner order.
 py::dict atlas_result(const Soup& soup, const Mesh& mesh, const Patch_map& patch, const UV_map& uv,
                       const std::string& report)
@@ -210,13 +222,10 @@ py::dict atlas_result(const Soup& soup, const Mesh& mesh, const Patch_map& patch
   {
     const Mesh::Face_index face(static_cast<Mesh::size_type>(f));
     c(f) = static_cast<std::uint32_t>(patch[face]);
-    for(Mesh::Halfedge_index h : CGAL::halfedges_around_face(mesh.halfedge(face), mesh))
-      for(std::size_t j = 0; j < 3; ++j)
-        if(std::size_t(mesh.target(h)) == soup.faces[f][j])
-        {
-          u(f, j, 0) = uv[h].x();
-          u(f, j, 1) = uv[h].y();
-        }
+    for_each_corner(mesh, soup, f, [&](Mesh::Halfedge_index h, std::size_t j) {
+      u(f, j, 0) = uv[h].x();
+      u(f, j, 1) = uv[h].y();
+    });
   }
   py::dict result;
   result["uvs"] = corner_uvs;
@@ -259,7 +268,7 @@ std::pair<std::size_t, std::size_t> keep_polygons_whole(const Mesh& mesh, const 
   for(std::int64_t g : order)
   {
     const std::vector<std::size_t>& faces = polygons[g];
-    std::vector<std::pair<std::size_t, std::size_t> > shares;  // (-count, patch) sorted: largest share first
+    std::vector<std::pair<std::size_t, std::size_t> > shares;  // (count, patch), sorted: largest share first
     for(std::size_t f : faces)
     {
       auto it = std::find_if(shares.begin(), shares.end(), [&](const auto& s) { return s.second == ids[f]; });
@@ -527,10 +536,9 @@ py::bytes atlas_file(const std::string& format, const py::handle& vertices, cons
     if(charts.at(f) < 0)
       throw Bad_argument("chart_ids must be non-negative");
     patch[face] = std::size_t(charts.at(f));
-    for(Mesh::Halfedge_index h : CGAL::halfedges_around_face(mesh.halfedge(face), mesh))
-      for(std::size_t j = 0; j < 3; ++j)
-        if(std::size_t(mesh.target(h)) == soup.faces[std::size_t(f)][j])
-          uv[h] = Kernel::Point_2(uvs.at(f, py::ssize_t(j), 0), uvs.at(f, py::ssize_t(j), 1));
+    for_each_corner(mesh, soup, std::size_t(f), [&](Mesh::Halfedge_index h, std::size_t j) {
+      uv[h] = Kernel::Point_2(uvs.at(f, py::ssize_t(j), 0), uvs.at(f, py::ssize_t(j), 1));
+    });
   }
   std::ostringstream out;
   if(format == "obj")
