@@ -145,6 +145,40 @@ TEST(Atlas, FallbackRepairsAChartThatTheRequestedMethodFlips)
   EXPECT_TRUE(atlas.ok()) << atlas.summary();
 }
 
+TEST(Atlas, UnderABoundAChartWithAnInvalidMapIsReplacedNotRedone)
+{
+  // ARAP's start on the pleated fan wraps around itself: without a bound the
+  // chart is redone from another start and kept whole; under a bound so
+  // loose that the redone chart would meet it, it is split instead.
+  Mesh tm = make(pleated_fan());
+  Patch_map patch = tm.add_property_map<Mesh::Face_index, std::size_t>("f:patch", 0).first;
+  UV_map uv = tm.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:uv", K::Point_2(0, 0)).first;
+  const double loose = 1e9;
+  DS::Distortion_bound b;
+  b.max_angle_distortion = b.max_area_distortion = b.max_stretch = b.max_area_scale = b.max_stretch_p95 = loose;
+
+  const DS::Parameterization_report unbounded =
+    DS::parameterize_patches(tm, patch, uv, DS::parameters::distortion_bound(DS::Distortion_bound::unbounded()));
+  ASSERT_EQ(unbounded.charts.size(), 1u);
+  EXPECT_TRUE(unbounded.charts[0].valid);
+  const TS::Chart_measure whole = TS::measure_charts(tm, patch, uv).begin()->second;
+  ASSERT_TRUE(whole.angle_mean < loose && whole.area_mean < loose && whole.max_stretch < loose &&
+              whole.max_scale < loose && whole.min_scale * loose > 1)
+    << "the redone chart would not meet the loose bound: the test is void";
+
+  for(auto& f : tm.faces())
+    put(patch, f, 0);
+  const DS::Parameterization_report bounded =
+    DS::parameterize_patches(tm, patch, uv, DS::parameters::distortion_bound(b));
+  EXPECT_GT(bounded.charts.size(), 1u);
+  EXPECT_EQ(bounded.number_of_fallbacks, 0u);
+  for(const DS::Chart_report& r : bounded.charts)
+    EXPECT_TRUE(r.valid);
+  DS::pack_patches(tm, patch, uv);
+  const TS::Atlas_report atlas = TS::check_atlas(tm, patch, uv, 512);
+  EXPECT_TRUE(atlas.ok()) << atlas.summary();
+}
+
 // Whether every chart meets `b`, measured with independent code.
 ::testing::AssertionResult charts_meet(const Mesh& tm, const Atlas& a, const DS::Distortion_bound& b)
 {

@@ -320,7 +320,7 @@ void split_and_parameterize(const Indexed_triangle_mesh& m, Splitter& splitter, 
         outcomes.push_back(outcome);
         continue;
       }
-      outcome = parameterize_chart(m, c, requested, use_fallback);
+      outcome = parameterize_chart(m, c, requested, use_fallback, needs_split.on_invalid_map());
       if(task.faces.size() == 1 || !needs_split(c, outcome))
       {
         pieces.push_back(std::move(c));
@@ -404,6 +404,16 @@ struct Split_rule
   const Border_smoother* smoother = nullptr;  // smooths the borders between pieces, if not null
 
   bool too_large(std::size_t faces) const { return faces > max_chart_faces; }
+
+  // Under a bound, an invalid chart is replaced like one over the bound,
+  // without the other starts and fallback methods: a chart whose first
+  // start folds is large or twisted, and redone from a circle it rarely
+  // meets the bound. Measured on 33 meshes (benchmark README): 36 % less
+  // time, 0.8 % more charts.
+  On_invalid_map on_invalid_map() const
+  {
+    return use_fallback && !bound.is_unbounded() ? On_invalid_map::report : On_invalid_map::redo;
+  }
 
   bool operator()(const Chart& c, const Chart_outcome& outcome) const
   {
@@ -642,7 +652,7 @@ Parameterization_report parameterize_patches_with_tree(const TriangleMesh& tm, F
         accepted[i] = 1;
         return;
       }
-      outcomes[i] = internal::parameterize_chart(m, charts[i], method, use_fallback);
+      outcomes[i] = internal::parameterize_chart(m, charts[i], method, use_fallback, needs_split.on_invalid_map());
       accepted[i] = (faces[i].size() == 1 || !needs_split(charts[i], outcomes[i])) ? 1 : 0;
       if(!accepted[i] && outcomes[i].valid)
       {
@@ -822,7 +832,11 @@ Parameterization_report parameterize_patches_with_tree(const TriangleMesh& tm, F
 /// has none) are replaced the same way: with a `merge_tree`, a patch is
 /// first replaced by the two disks it was merged from, recursively down to
 /// the tree's leaves, which are then split; the candidates of one tree level
-/// are parameterized in parallel. Patches with more than
+/// are parameterized in parallel. Under a finite bound, a chart of more
+/// than one triangle whose map is invalid is replaced the same way at once,
+/// without the other methods (a map redone on a circle rarely meets the
+/// bound, and it was a third of the time on meshes with such charts).
+/// Patches with more than
 /// `max_chart_faces` faces are split the same way before they are
 /// parameterized, with or without the fallback.
 ///

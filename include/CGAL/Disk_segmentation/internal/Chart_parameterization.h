@@ -372,17 +372,31 @@ inline bool arap_from_lscm(const Indexed_triangle_mesh& m, Chart& c, std::vector
   return arap_from(c, border_loop, g, std::move(start));
 }
 
+// What parameterize_chart() does when the requested method gives a chart of
+// more than one triangle an invalid map.
+enum class On_invalid_map
+{
+  redo,    // other starts of the method, then the fallback methods
+  report   // nothing: the caller replaces the chart by smaller ones
+};
+
 // Runs one method on the chart; returns an empty string on success, else
 // what went wrong. The UVs are left in `c.uv` in either case.
 inline std::string parameterize_chart_with(const Indexed_triangle_mesh& m, Chart& c, Parameterization_method method,
-                                           std::vector<Index>& border_loop)
+                                           std::vector<Index>& border_loop,
+                                           On_invalid_map on_invalid = On_invalid_map::redo)
 {
   namespace SMP = CGAL::Surface_mesh_parameterization;
   typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_3 Point_3;
 
   c.uv.assign(c.vertices.size(), {{ 0., 0. }});
-  if(method == Parameterization_method::ARAP && c.triangles.size() > 1 && arap_from_lscm(m, c, border_loop))
-    return std::string();
+  if(method == Parameterization_method::ARAP && c.triangles.size() > 1)
+  {
+    if(arap_from_lscm(m, c, border_loop))
+      return std::string();
+    if(on_invalid == On_invalid_map::report)
+      return "ARAP: the free-border LSCM start folds or overlaps and the iterations did not repair it";
+  }
 
   Chart_mesh mesh;
   mesh.reserve(static_cast<Chart_mesh::size_type>(c.vertices.size()),
@@ -514,14 +528,19 @@ struct Chart_outcome
 // The requested method, then, if its chart is invalid and `use_fallback`,
 // mean value coordinates and Tutte's barycentric map on a circle: both are
 // injective by construction for a disk mapped to a convex border (positive
-// weights), so they only fail on numerically degenerate input.
+// weights), so they only fail on numerically degenerate input. With
+// `On_invalid_map::report`, a chart of more than one triangle gets the
+// requested method from its first start only.
 inline Chart_outcome parameterize_chart(const Indexed_triangle_mesh& m, Chart& c,
-                                        Parameterization_method requested, bool use_fallback)
+                                        Parameterization_method requested, bool use_fallback,
+                                        On_invalid_map on_invalid = On_invalid_map::redo)
 {
   Chart_outcome outcome;
   std::vector<Index> border_loop;
   std::vector<Parameterization_method> chain(1, requested);
-  if(use_fallback)
+  if(c.triangles.size() < 2)
+    on_invalid = On_invalid_map::redo;
+  if(use_fallback && on_invalid == On_invalid_map::redo)
     for(Parameterization_method fallback : { Parameterization_method::MEAN_VALUE, Parameterization_method::TUTTE })
       if(fallback != requested)
         chain.push_back(fallback);
@@ -529,7 +548,7 @@ inline Chart_outcome parameterize_chart(const Indexed_triangle_mesh& m, Chart& c
   // The fallback chain: at most three methods (requested, mean value, Tutte).
   for(std::size_t i = 0; i < chain.size(); ++i)
   {
-    std::string problem = parameterize_chart_with(m, c, chain[i], border_loop);
+    std::string problem = parameterize_chart_with(m, c, chain[i], border_loop, on_invalid);
     bool error = !problem.empty();
     if(problem.empty())
     {

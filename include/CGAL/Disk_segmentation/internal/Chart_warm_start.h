@@ -37,7 +37,7 @@ inline bool arap_from_start(const Indexed_triangle_mesh& m, Chart& c, Chart_uv s
 // gives a valid chart; the full chain (LSCM start, fallbacks) otherwise.
 inline Chart_outcome parameterize_chart_from(const Indexed_triangle_mesh& m, Chart& c,
                                              Parameterization_method requested, bool use_fallback,
-                                             const Chart_uv* start)
+                                             const Chart_uv* start, On_invalid_map on_invalid)
 {
   if(start != nullptr && requested == Parameterization_method::ARAP && arap_from_start(m, c, *start))
   {
@@ -46,7 +46,7 @@ inline Chart_outcome parameterize_chart_from(const Indexed_triangle_mesh& m, Cha
     outcome.valid = true;
     return outcome;
   }
-  return parameterize_chart(m, c, requested, use_fallback);
+  return parameterize_chart(m, c, requested, use_fallback, on_invalid);
 }
 
 // A start map for the union `u` of two parameterized charts `a` and `b`
