@@ -554,9 +554,11 @@ TEST(Atlas, SplittingAChartGivesValidDiskPieces)
   for(DS::internal::Index f = 0; f < all.size(); ++f) all[f] = f;
   std::vector<DS::internal::Chart> pieces;
   std::vector<DS::internal::Chart_outcome> outcomes;
+  std::vector<std::uint64_t> rejected;
   DS::internal::split_and_parameterize(m, splitter, all, DS::Parameterization_method::ARAP, true, pieces, outcomes,
                                        DS::internal::Split_rule{ m, DS::Distortion_bound(),
-                                                                 DS::default_max_chart_faces, true });
+                                                                 DS::default_max_chart_faces, true },
+                                       rejected);
   ASSERT_GE(pieces.size(), 2u);
   std::vector<int> covered(m.number_of_faces(), 0);
   for(std::size_t i = 0; i < pieces.size(); ++i)

@@ -39,10 +39,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <numeric>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 namespace CGAL {
@@ -267,7 +269,8 @@ inline void smooth_parts(const Border_smoother& smoother, Splitter& splitter, co
 // Splits a chart into the Voronoi cells of two seeds (one per component if
 // it has more), refined to disks, and parameterizes each piece on its own; a
 // piece too large to parameterize, or for which `needs_split` holds once
-// parameterized, is split again.
+// parameterized, is split again. The region_key() of every piece that was
+// parameterized and split again is added to `rejected`.
 //
 // Bound: `faces` (at least 2) gets at least two seeds, each keeping its own
 // face, so every piece is smaller than `faces`, and a single triangle is
@@ -279,7 +282,8 @@ template <typename NeedsSplit>
 void split_and_parameterize(const Indexed_triangle_mesh& m, Splitter& splitter, const std::vector<Index>& faces,
                             Parameterization_method requested, bool use_fallback, std::vector<Chart>& pieces,
                             std::vector<Chart_outcome>& outcomes, const NeedsSplit& needs_split,
-                            double excess_density = 0, Parent_chart parent = Parent_chart())
+                            std::vector<std::uint64_t>& rejected, double excess_density = 0,
+                            Parent_chart parent = Parent_chart())
 {
   if(faces.size() < 2)
     return;
@@ -325,8 +329,14 @@ void split_and_parameterize(const Indexed_triangle_mesh& m, Splitter& splitter, 
       {
         pieces.push_back(std::move(c));
         outcomes.push_back(outcome);
+        continue;
       }
-      else if(outcome.valid)
+      {
+        std::vector<Index> sorted = task.faces;
+        std::sort(sorted.begin(), sorted.end());
+        rejected.push_back(region_key(sorted));
+      }
+      if(outcome.valid)
       {
         const double density = needs_split.excess_density(c, area);
         stack.push_back(Task{ std::move(task.faces), density, true,
@@ -626,6 +636,9 @@ Parameterization_report parameterize_patches_with_tree(const TriangleMesh& tm, F
   std::vector<std::string> patch_problem(number_of_patches);
   std::vector<internal::Chart_candidate> to_split;
   std::size_t settled = 0;
+  // Regions rejected, parameterized or predicted over the bound (see
+  // region_key()).
+  std::unordered_set<std::uint64_t> rejected_regions;
   // Waves: each goes one level down the tree, at most its height.
   while(!wave.empty())
   {
@@ -668,6 +681,8 @@ Parameterization_report parameterize_patches_with_tree(const TriangleMesh& tm, F
       internal::Chart_candidate& c = wave[i];
       if(c.path.empty())
         patch_problem[c.patch] = outcomes[i].problem;
+      if(!accepted[i])
+        rejected_regions.insert(internal::region_key(faces[i]));
       if(accepted[i])
       {
         outcomes[i].problem = patch_problem[c.patch];
@@ -692,11 +707,14 @@ Parameterization_report parameterize_patches_with_tree(const TriangleMesh& tm, F
   {
     std::vector<std::vector<internal::Chart> > pieces(to_split.size());
     std::vector<std::vector<internal::Chart_outcome> > piece_outcomes(to_split.size());
+    std::vector<std::vector<std::uint64_t> > rejected_pieces(to_split.size());
     internal::for_each_index(to_split.size(), threads, [&](std::size_t i) {
       internal::split_and_parameterize(m, splitter.local(), candidate_faces(to_split[i]), method, use_fallback,
-                                       pieces[i], piece_outcomes[i], needs_split, to_split[i].excess_density,
-                                       to_split[i].parent);
+                                       pieces[i], piece_outcomes[i], needs_split, rejected_pieces[i],
+                                       to_split[i].excess_density, to_split[i].parent);
     });
+    for(const std::vector<std::uint64_t>& keys : rejected_pieces)
+      rejected_regions.insert(keys.begin(), keys.end());
     for(std::size_t i = 0; i < to_split.size(); ++i)
       for(std::size_t j = 0; j < pieces[i].size(); ++j)
       {
@@ -709,7 +727,8 @@ Parameterization_report parameterize_patches_with_tree(const TriangleMesh& tm, F
   }
   if(use_fallback && settings.merge_charts && !settings.bound.is_unbounded())
     internal::merge_kept_charts(m, topology, kept, needs_split, method, use_fallback,
-                                [&](std::size_t n, const auto& work) { internal::for_each_index(n, threads, work); });
+                                [&](std::size_t n, const auto& work) { internal::for_each_index(n, threads, work); },
+                                rejected_regions);
   progress("parameterization", number_of_patches, number_of_patches);
 
   // Each patch's charts in tree order; the first keeps the patch's id if
