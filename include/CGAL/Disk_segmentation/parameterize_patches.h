@@ -681,15 +681,15 @@ Parameterization_report parameterize_patches_with_tree(const TriangleMesh& tm, F
       internal::Chart_candidate& c = wave[i];
       if(c.path.empty())
         patch_problem[c.patch] = outcomes[i].problem;
-      if(!accepted[i])
-        rejected_regions.insert(internal::region_key(faces[i]));
       if(accepted[i])
       {
         outcomes[i].problem = patch_problem[c.patch];
         kept.push_back(internal::Kept_chart{ c.patch, c.path, std::move(charts[i]), outcomes[i] });
         ++settled;
+        continue;
       }
-      else if(c.node != internal::Chart_candidate::no_node && !tree->is_leaf(c.node))
+      rejected_regions.insert(internal::region_key(faces[i]));
+      if(c.node != internal::Chart_candidate::no_node && !tree->is_leaf(c.node))
         for(std::size_t j = 0; j < 2; ++j)
         {
           internal::Chart_candidate child{ c.patch, tree->children(c.node)[j], c.path, c.excess_density, c.parent };
