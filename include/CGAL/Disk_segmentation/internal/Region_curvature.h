@@ -1,0 +1,88 @@
+// Copyright (c) 2026 The Disk_segmentation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_DISK_SEGMENTATION_INTERNAL_REGION_CURVATURE_H
+#define CGAL_DISK_SEGMENTATION_INTERNAL_REGION_CURVATURE_H
+
+#include <CGAL/Disk_segmentation/internal/Indexed_triangle_mesh.h>
+
+#include <CGAL/number_type_config.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace CGAL {
+namespace Disk_segmentation {
+namespace internal {
+
+// The Gaussian curvature a region holds inside it: the sum of the angle
+// defects (2 pi minus the angles around the vertex) of the vertices whose
+// faces all belong to the region, vertices on the mesh's border excluded.
+// By Gauss-Bonnet it is what the region's border must turn away from 2 pi
+// to lie flat, so a large value says that no flattening of the region is
+// close to an isometry. Signed: the noise of scanned surfaces cancels out.
+class Interior_curvature
+{
+public:
+  explicit Interior_curvature(const Indexed_triangle_mesh& m)
+    : defect_(m.number_of_vertices(), 2. * CGAL_PI), degree_(m.number_of_vertices(), 0)
+  {
+    for(Index f = 0; f < m.number_of_faces(); ++f)
+      for(int j = 0; j < 3; ++j)
+      {
+        const Index v = m.corners[f][j];
+        ++degree_[v];
+        defect_[v] -= corner_angle(m.points[v], m.points[m.corners[f][(j + 1) % 3]], m.points[m.corners[f][(j + 2) % 3]]);
+      }
+    for(Index f = 0; f < m.number_of_faces(); ++f)
+      for(int j = 0; j < 3; ++j)
+        if(m.neighbors[f][j] == no_index)
+        {
+          degree_[m.corners[f][j]] = border_vertex;
+          degree_[m.corners[f][(j + 1) % 3]] = border_vertex;
+        }
+  }
+
+  // Thread-safe: the only scratch is local.
+  double operator()(const Indexed_triangle_mesh& m, const std::vector<Index>& faces) const
+  {
+    std::vector<Index> corners;
+    corners.reserve(3 * faces.size());
+    for(Index f : faces)
+      corners.insert(corners.end(), m.corners[f].begin(), m.corners[f].end());
+    std::sort(corners.begin(), corners.end());
+    double sum = 0.;
+    for(std::size_t i = 0; i < corners.size();)
+    {
+      std::size_t j = i + 1;
+      while(j < corners.size() && corners[j] == corners[i])
+        ++j;
+      if(j - i == degree_[corners[i]])
+        sum += defect_[corners[i]];
+      i = j;
+    }
+    return sum;
+  }
+
+private:
+  static constexpr Index border_vertex = no_index;
+
+  static double corner_angle(const std::array<double, 3>& a, const std::array<double, 3>& b,
+                             const std::array<double, 3>& c)
+  {
+    const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+    const double v[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+    const double x = u[1] * v[2] - u[2] * v[1], y = u[2] * v[0] - u[0] * v[2], z = u[0] * v[1] - u[1] * v[0];
+    return std::atan2(std::sqrt(x * x + y * y + z * z), u[0] * v[0] + u[1] * v[1] + u[2] * v[2]);
+  }
+
+  std::vector<double> defect_;
+  std::vector<Index> degree_;  // faces around each vertex; border_vertex on the mesh's border
+};
+
+} // namespace internal
+} // namespace Disk_segmentation
+} // namespace CGAL
+
+#endif // CGAL_DISK_SEGMENTATION_INTERNAL_REGION_CURVATURE_H
