@@ -638,6 +638,64 @@ TEST(Atlas, InteriorCurvatureOfARegionFollowsGaussBonnet)
   }
 }
 
+TEST(Atlas, AConePointIsSplitThroughByTwoSeedsAroundIt)
+{
+  // A disk whose centre is raised: the apex is a cone point. The split seeds
+  // must sit on opposite sides of it, so that both cells hold faces around
+  // it (it is on the border of both) and each holds about half the disk.
+  TS::Soup soup = TS::disk(6, 16);
+  soup.points[0][2] = 1.;
+  const Mesh tm = make(soup);
+  DS::internal::Indexed_triangle_mesh m;
+  std::vector<Mesh::Face_index> face_handles;
+  DS::internal::build_indexed_triangle_mesh(tm, DS::parameters::default_values(), m, face_handles);
+  std::vector<DS::internal::Index> all(m.number_of_faces());
+  for(DS::internal::Index f = 0; f < all.size(); ++f) all[f] = f;
+
+  const DS::internal::Interior_curvature curvature(m);
+  double defect = 0.;
+  const DS::internal::Index apex = curvature.sharpest_interior_vertex(m, all, defect);
+  ASSERT_NE(apex, DS::internal::no_index);
+  EXPECT_EQ(m.points[apex][2], 1.);
+  EXPECT_GT(defect, DS::internal::smallest_cone_defect);
+
+  const std::vector<DS::internal::Index> seeds = DS::internal::opposite_faces_around(m, all, apex);
+  ASSERT_EQ(seeds.size(), 2u);
+  // Opposite: the directions from the apex to the two faces' centroids
+  // (seen from above) point away from each other.
+  double direction[2][2];
+  for(int k = 0; k < 2; ++k)
+  {
+    double x = 0., y = 0.;
+    for(DS::internal::Index v : m.corners[seeds[k]])
+    {
+      EXPECT_LT(m.points[v][2], 1.1);
+      x += m.points[v][0] / 3.;
+      y += m.points[v][1] / 3.;
+    }
+    direction[k][0] = x;
+    direction[k][1] = y;
+  }
+  EXPECT_LT(direction[0][0] * direction[1][0] + direction[0][1] * direction[1][1], 0.);
+
+  DS::internal::Voronoi_fps fps(m);
+  ASSERT_TRUE(fps.run_from_seeds(all, seeds));
+  std::size_t size[2] = { 0, 0 }, around_apex[2] = { 0, 0 };
+  for(DS::internal::Index f : all)
+  {
+    const DS::internal::Index c = fps.cell(f);
+    ASSERT_LT(c, 2u);
+    ++size[c];
+    const auto& corners = m.corners[f];
+    if(std::find(corners.begin(), corners.end(), apex) != corners.end())
+      ++around_apex[c];
+  }
+  EXPECT_GT(around_apex[0], 0u);
+  EXPECT_GT(around_apex[1], 0u);
+  EXPECT_GT(size[0], all.size() / 4);
+  EXPECT_GT(size[1], all.size() / 4);
+}
+
 TEST(Atlas, WorksOnPolyhedron)
 {
   typedef CGAL::Polyhedron_3<K> Polyhedron;

@@ -47,25 +47,51 @@ public:
   // Thread-safe: the only scratch is local.
   double operator()(const Indexed_triangle_mesh& m, const std::vector<Index>& faces) const
   {
+    double sum = 0.;
+    for_each_interior_vertex(m, faces, [&](Index v) { sum += defect_[v]; });
+    return sum;
+  }
+
+  // The interior vertex of the region with the largest |angle defect| (the
+  // smallest index among equals), and that defect; no_index if none.
+  Index sharpest_interior_vertex(const Indexed_triangle_mesh& m, const std::vector<Index>& faces,
+                                 double& defect) const
+  {
+    Index sharpest = no_index;
+    defect = 0.;
+    for_each_interior_vertex(m, faces, [&](Index v) {
+      if(std::abs(defect_[v]) > std::abs(defect))
+      {
+        sharpest = v;
+        defect = defect_[v];
+      }
+    });
+    return sharpest;
+  }
+
+private:
+  // Calls `visit(v)` for every interior vertex of the region, by
+  // increasing index.
+  template <typename Visit>
+  void for_each_interior_vertex(const Indexed_triangle_mesh& m, const std::vector<Index>& faces,
+                                const Visit& visit) const
+  {
     std::vector<Index> corners;
     corners.reserve(3 * faces.size());
     for(Index f : faces)
       corners.insert(corners.end(), m.corners[f].begin(), m.corners[f].end());
     std::sort(corners.begin(), corners.end());
-    double sum = 0.;
     for(std::size_t i = 0; i < corners.size();)
     {
       std::size_t j = i + 1;
       while(j < corners.size() && corners[j] == corners[i])
         ++j;
       if(j - i == degree_[corners[i]])
-        sum += defect_[corners[i]];
+        visit(corners[i]);
       i = j;
     }
-    return sum;
   }
 
-private:
   static constexpr Index border_vertex = no_index;
 
   static double corner_angle(const std::array<double, 3>& a, const std::array<double, 3>& b,

@@ -66,20 +66,7 @@ public:
     if(region.empty())
       return seeds;
 
-    ++stamp_;
-    if(stamp_ == 0)
-    {
-      std::fill(member_.begin(), member_.end(), 0);
-      std::fill(is_seed_.begin(), is_seed_.end(), 0);
-      stamp_ = 1;
-    }
-    for(Index f : region)
-    {
-      member_[f] = stamp_;
-      distance_[f] = infinity();
-      cell_[f] = no_index;
-    }
-
+    enter(region);
     seed_components(region, first_seed, rng, seeds);
 
     const std::size_t target = (std::min)((std::max)(n, seeds.size()), region.size());
@@ -113,6 +100,24 @@ public:
     return seeds;
   }
 
+  // Partitions `region` into the Voronoi cells of `seeds` (faces of the
+  // region); `cell(f)` then is the position of the seed of f. Returns false
+  // if a face of the region is reached from no seed (another component).
+  bool run_from_seeds(const std::vector<Index>& region, const std::vector<Index>& seeds)
+  {
+    enter(region);
+    for(std::size_t s = 0; s < seeds.size(); ++s)
+    {
+      CGAL_precondition(member_[seeds[s]] == stamp_);
+      make_seed(seeds[s], static_cast<Index>(s));
+    }
+    relax_from(seeds, false);
+    for(Index f : region)
+      if(cell_[f] == no_index)
+        return false;
+    return true;
+  }
+
   Index cell(Index f) const { return cell_[f]; }
 
 private:
@@ -126,6 +131,24 @@ private:
   // Distances are measured in the frame of each face's component; seeds
   // compete across components in the common frame (exact: a power of two).
   double farthest_key(Index f, double d) const { return d * m_.common_unit(f); }
+
+  // Makes `region` the current region, every face unreached.
+  void enter(const std::vector<Index>& region)
+  {
+    ++stamp_;
+    if(stamp_ == 0)
+    {
+      std::fill(member_.begin(), member_.end(), 0);
+      std::fill(is_seed_.begin(), is_seed_.end(), 0);
+      stamp_ = 1;
+    }
+    for(Index f : region)
+    {
+      member_[f] = stamp_;
+      distance_[f] = infinity();
+      cell_[f] = no_index;
+    }
+  }
 
   void make_seed(Index s, Index c)
   {
