@@ -626,8 +626,9 @@ std::vector<Chart_similarity> grid_layout(const Chart_set<TriangleMesh>& charts,
 /// no cell already taken, so that small charts fill the holes under and
 /// inside large ones and long charts may lie along a diagonal; each trial
 /// aims at the scale at which the rows used would just fill the square, to
-/// 1 percent, in at most six trials. The best of the three layouts (rectangles, profile, raster) is
-/// kept. Padding is rounded up to whole cells.
+/// 1 percent, in at most six trials. The best of the three layouts
+/// (rectangles, profile, raster) is kept. Padding is rounded up to whole
+/// cells.
 ///
 /// With `Packing_method::GRID` (the paper's packer), chart `i` goes to cell
 /// `i` of a `ceil(sqrt(P)) x ceil(sqrt(P))` grid of equal square cells, row by
