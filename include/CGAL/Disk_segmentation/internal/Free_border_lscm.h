@@ -74,52 +74,63 @@ inline bool free_border_lscm(const Chart_geometry& g, const std::vector<std::siz
   for(std::size_t v = 0; v < n; ++v)
     if(v != pin0 && v != pin1)
       unknown[v] = rank[v] - (rank[v] > rank[pin0] ? 1 : 0) - (rank[v] > rank[pin1] ? 1 : 0);
-  std::vector<Eigen::Triplet<double> > entries;
-  entries.reserve(14 * triangles.size() + 2 * border.size());
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(2 * free_vertices);
-  // Adds h to H at (row, col) for coordinates cr, cc (0: u, 1: v) of
-  // vertices r, c; a pinned column goes to the right-hand side.
-  // Only the lower triangle goes to the matrix (the solver reads no more).
-  auto add = [&](std::size_t r, int cr, std::size_t c, int cc, double h) {
-    if(unknown[r] == none)
-      return;
-    const Eigen::Index row = 2 * unknown[r] + cr;
-    if(unknown[c] == none)
-      rhs[row] -= h * uv[c][cc];
-    else if(row >= 2 * unknown[c] + cc)
-      entries.emplace_back(row, 2 * unknown[c] + cc, h);
-  };
-
   std::vector<std::array<std::array<double, 2>, 3> > frames;
   std::vector<std::array<double, 3> > cot;
   if(!isometric_frames(points, triangles, frames, cot))
     return false;
-  for(std::size_t t = 0; t < triangles.size(); ++t)
-    for(int i = 0; i < 3; ++i)
-    {
-      const double weight = 0.5 * cot[t][i];
-      const std::size_t va = triangles[t][i], vb = triangles[t][(i + 1) % 3];
-      for(int coordinate = 0; coordinate < 2; ++coordinate)
-      {
-        add(va, coordinate, va, coordinate, weight);
-        add(vb, coordinate, vb, coordinate, weight);
-        add(va, coordinate, vb, coordinate, -weight);
-        add(vb, coordinate, va, coordinate, -weight);
-      }
-    }
+  const Chart_edges& edges = g.edges;
+  std::vector<double> edge_weight, vertex_weight;
+  cotangent_weights(edges, cot, edge_weight, vertex_weight);
+  // +1 (-1) where the border runs along an edge from its first (second)
+  // end to the other, 0 off the border.
+  std::vector<signed char> border_direction(edges.ends.size(), 0);
   for(std::size_t k = 0; k < border.size(); ++k)
   {
     const std::size_t i = border[k], j = border[(k + 1) % border.size()];
-    // -1/2 (u_i v_j - u_j v_i), symmetrized.
-    add(i, 0, j, 1, -0.5);
-    add(j, 1, i, 0, -0.5);
-    add(j, 0, i, 1, 0.5);
-    add(i, 1, j, 0, 0.5);
+    const std::size_t e = edges.between(i, j);
+    if(e == Chart_edges::none)
+      return false;
+    border_direction[e] = static_cast<signed char>(edges.ends[e][0] == i ? 1 : -1);
   }
+  // H at (2 x + c, 2 y + 1 - c) for the edge e between x and y: the border
+  // term -1/2 (u_i v_j - u_j v_i) of each border edge i -> j, symmetrized.
+  auto cross = [&](std::size_t x, std::size_t e, int c) {
+    const double along = edges.ends[e][0] == x ? border_direction[e] : -border_direction[e];
+    return along * (c == 0 ? -0.5 : 0.5);
+  };
   if(free_vertices == 0)
     return true;
-  Eigen::SparseMatrix<double> h(2 * free_vertices, 2 * free_vertices);
-  h.setFromTriplets(entries.begin(), entries.end());
+  std::vector<std::size_t> vertex_of(static_cast<std::size_t>(free_vertices));
+  for(std::size_t v = 0; v < n; ++v)
+    if(unknown[v] != none)
+      vertex_of[std::size_t(unknown[v])] = v;
+  // Pinned neighbors move to the right-hand side.
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(2 * free_vertices);
+  for(std::size_t v = 0; v < n; ++v)
+    if(unknown[v] != none)
+      for(std::size_t k = edges.first[v]; k < edges.first[v + 1]; ++k)
+      {
+        const std::size_t p = edges.neighbor[k], e = edges.edge[k];
+        if(unknown[p] == none)
+          for(int c = 0; c < 2; ++c)
+            rhs[2 * unknown[v] + c] += edge_weight[e] * uv[p][c] - cross(v, e, c) * uv[p][1 - c];
+      }
+  Eigen::SparseMatrix<double> h;
+  assemble_upper_triangle(2 * free_vertices, 2 * std::size_t(free_vertices) + 4 * edges.ends.size(),
+                          [&](Eigen::Index column, const auto& add) {
+    const std::size_t v = vertex_of[std::size_t(column / 2)];
+    const int c = int(column % 2);
+    add(column, vertex_weight[v]);
+    for(std::size_t k = edges.first[v]; k < edges.first[v + 1]; ++k)
+    {
+      const std::size_t w = edges.neighbor[k], e = edges.edge[k];
+      if(unknown[w] == none || unknown[w] >= unknown[v])
+        continue;
+      add(2 * unknown[w] + c, -edge_weight[e]);
+      if(border_direction[e] != 0)
+        add(2 * unknown[w] + 1 - c, cross(w, e, 1 - c));
+    }
+  }, h);
   Ordered_sparse_ldlt solver(h);
   if(solver.info() != Eigen::Success)
     return false;
