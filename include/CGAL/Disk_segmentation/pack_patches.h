@@ -358,8 +358,10 @@ border_triangles(const std::vector<Packing_point>& corners, std::size_t begin, s
   return kept;
 }
 
-// Above this many charts only the raster packer runs (see shape_layout()).
+// Above this many charts only the raster packer runs, from this multiple
+// of the rectangles' scale (see shape_layout()).
 constexpr std::size_t profile_packer_max_charts = 64;
+constexpr double raster_start_over_rectangles = 1.2;
 
 // The better of the two shape packers' layouts (profile, then raster) at
 // the largest scale each reaches, if that is above `rectangle_scale` (the
@@ -446,10 +448,15 @@ std::vector<Chart_similarity> shape_layout(const Chart_set<TriangleMesh>& charts
     // each trial aims at the scale that would just fill the square, then
     // bisection between the best fit and the smallest failure, to 1 percent
     // (4 to 6 trials on 10 meshes of CGAL's data). It starts from the
-    // profile packer's scale (the rectangles' without it) and gives up if
-    // it cannot reach it.
+    // profile packer's scale and gives up if it cannot reach it. Without
+    // the profile packer (many charts), it starts 20 % above the
+    // rectangles' scale, about where it ends, and a failure only aims
+    // lower.
     Raster_packer packer(columns, pad_cells);
+    const bool after_profile = lo > 0.;
     double fit = 0., fail = hi, scale = (std::max)(lo, rectangle_scale);
+    if(!after_profile)
+      scale = (std::min)(hi, raster_start_over_rectangles * rectangle_scale);
     const double target = double(columns);
     const double tol = 0.01;
     const int max_trials = 6;
@@ -462,7 +469,7 @@ std::vector<Chart_similarity> shape_layout(const Chart_set<TriangleMesh>& charts
         fit = scale;
         raster_best.swap(placement);
       }
-      else if(fit == 0.)
+      else if(fit == 0. && after_profile)
         break;
       else
         fail = (std::min)(fail, scale);
