@@ -956,6 +956,60 @@ TEST(Atlas, FreeBorderLscmAndArapKeepAPlanarChartUpToASimilarity)
   EXPECT_EQ(similarity_problem(p.m, c, c.uv, 1e-6), "");
 }
 
+TEST(Atlas, ChartEdgesListEveryEdgeOnceAroundBothEnds)
+{
+  // The edge list the LSCM and ARAP matrices are assembled from, checked
+  // against the triangles' sides collected here in a std::map: each side
+  // maps to the edge joining its two corners, each edge is some side, the
+  // chart (a disk) has V - E + F = 1, and every vertex lists each neighbor
+  // once, in increasing order, with the edge that joins them.
+  Planar_chart p;
+  make_planar_chart(p);
+  std::vector<DS::internal::Index> all(p.m.number_of_faces());
+  for(DS::internal::Index f = 0; f < all.size(); ++f) all[f] = f;
+  const DS::internal::Chart c = DS::internal::make_chart(p.m, all);
+  const DS::internal::Chart_geometry g = DS::internal::chart_geometry(p.m, c);
+  const DS::internal::Chart_edges& edges = g.edges;
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> sides;  // -> how many triangles have it
+  for(std::size_t t = 0; t < g.triangles.size(); ++t)
+    for(int i = 0; i < 3; ++i)
+    {
+      const std::size_t a = g.triangles[t][i], b = g.triangles[t][(i + 1) % 3];
+      const std::pair<std::size_t, std::size_t> side((std::min)(a, b), (std::max)(a, b));
+      ++sides[side];
+      const std::array<std::size_t, 2>& ends = edges.ends[edges.of_triangle[t][i]];
+      EXPECT_EQ(std::make_pair(ends[0], ends[1]), side);
+    }
+  ASSERT_EQ(edges.ends.size(), sides.size());
+  EXPECT_EQ(long(g.points.size()) - long(edges.ends.size()) + long(g.triangles.size()), 1L);
+  std::size_t listed = 0;
+  for(std::size_t v = 0; v < g.points.size(); ++v)
+    for(std::size_t k = edges.first[v]; k < edges.first[v + 1]; ++k, ++listed)
+    {
+      const std::size_t w = edges.neighbor[k];
+      const std::array<std::size_t, 2>& ends = edges.ends[edges.edge[k]];
+      EXPECT_EQ(std::make_pair(ends[0], ends[1]), std::make_pair((std::min)(v, w), (std::max)(v, w)));
+      EXPECT_EQ(sides.count(std::make_pair((std::min)(v, w), (std::max)(v, w))), 1u);
+      EXPECT_EQ(edges.between(w, v), edges.edge[k]);
+      if(k > edges.first[v])
+        EXPECT_LT(edges.neighbor[k - 1], w);
+    }
+  EXPECT_EQ(listed, 2 * sides.size());
+  // A border edge is the side of one triangle; the chart's border loop runs
+  // along exactly those.
+  const std::vector<DS::internal::Index> border = DS::internal::chart_border_loop(c);
+  std::size_t border_sides = 0;
+  for(const auto& side : sides)
+    border_sides += side.second == 1 ? 1 : 0;
+  EXPECT_EQ(border_sides, border.size());
+  for(std::size_t k = 0; k < border.size(); ++k)
+  {
+    const std::size_t e = edges.between(border[k], border[(k + 1) % border.size()]);
+    ASSERT_NE(e, DS::internal::Chart_edges::none);
+    EXPECT_EQ(sides[std::make_pair(edges.ends[e][0], edges.ends[e][1])], 1u);
+  }
+}
+
 TEST(Atlas, TwoChartMapsGlueIntoTheMapOfTheirUnion)
 {
   // Two halves of a planar chart, each laid out by its own similarity (other
