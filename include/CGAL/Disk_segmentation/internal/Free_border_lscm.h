@@ -41,7 +41,6 @@ inline bool free_border_lscm(const Chart_geometry& g, const std::vector<std::siz
                              std::vector<std::array<double, 2> >& uv)
 {
   const std::vector<std::array<double, 3> >& points = g.points;
-  const std::vector<std::array<std::size_t, 3> >& triangles = g.triangles;
   const std::size_t n = points.size();
   uv.assign(n, {{ 0., 0. }});
   if(n < 3 || border.size() < 3)
@@ -74,13 +73,11 @@ inline bool free_border_lscm(const Chart_geometry& g, const std::vector<std::siz
   for(std::size_t v = 0; v < n; ++v)
     if(v != pin0 && v != pin1)
       unknown[v] = rank[v] - (rank[v] > rank[pin0] ? 1 : 0) - (rank[v] > rank[pin1] ? 1 : 0);
-  std::vector<std::array<std::array<double, 2>, 3> > frames;
-  std::vector<std::array<double, 3> > cot;
-  if(!isometric_frames(points, triangles, frames, cot))
+  if(!g.has_frames)
     return false;
   const Chart_edges& edges = g.edges;
-  std::vector<double> edge_weight, vertex_weight;
-  cotangent_weights(edges, cot, edge_weight, vertex_weight);
+  const std::vector<double>& edge_weight = g.edge_weight;
+  const std::vector<double>& vertex_weight = g.vertex_weight;
   // +1 (-1) where the border runs along an edge from its first (second)
   // end to the other, 0 off the border.
   std::vector<signed char> border_direction(edges.ends.size(), 0);

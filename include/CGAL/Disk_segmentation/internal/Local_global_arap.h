@@ -25,8 +25,8 @@ namespace internal {
 // The edges of a chart's triangles, each once, and the edges around each
 // vertex. The LSCM and ARAP matrices and the elimination order are all
 // built on this graph, column by column: assembling them from triplets
-// (sorted, summed and transposed by Eigen) was 18 % of the whole atlas's
-// time on bunny00.
+// (sorted, summed and transposed by Eigen), with the triangles' frames,
+// took 0.26 s of bunny00's 1.4 s.
 struct Chart_edges
 {
   std::vector<std::array<std::size_t, 2> > ends;         // by increasing (first, second), first < second
@@ -178,25 +178,6 @@ inline std::vector<Eigen::Index> vertex_elimination_rank(std::size_t n, const Ch
   return rank;
 }
 
-// A chart's 3D positions, its triangles (counterclockwise), their edges
-// and the elimination rank of its vertices, as the LSCM and ARAP solvers
-// take them.
-struct Chart_geometry
-{
-  std::vector<std::array<double, 3> > points;
-  std::vector<std::array<std::size_t, 3> > triangles;
-  Chart_edges edges;
-  std::vector<Eigen::Index> elimination_rank;
-
-  Chart_geometry() = default;
-  Chart_geometry(std::vector<std::array<double, 3> > p, std::vector<std::array<std::size_t, 3> > t)
-    : points(std::move(p)), triangles(std::move(t))
-  {
-    build_chart_edges(points.size(), triangles, edges);
-    elimination_rank = vertex_elimination_rank(points.size(), edges);
-  }
-};
-
 // Sparse LDL^T on a matrix already in elimination order; only its upper
 // triangle is read, so only that is assembled (the upper one: the solver
 // would copy a lower one into it).
@@ -261,6 +242,36 @@ inline bool isometric_frames(const std::vector<std::array<double, 3> >& points,
   return true;
 }
 
+// A chart's 3D positions, its triangles (counterclockwise), their edges
+// and the elimination rank of its vertices, as the LSCM and ARAP solvers
+// take them, with what both read of the geometry, computed once per chart:
+// each triangle in its own plane with its cotangents (see
+// isometric_frames(); `has_frames` is false if a triangle has a zero edge
+// or no area), the edges' cotangent weights and their sums around the
+// vertices (see cotangent_weights()).
+struct Chart_geometry
+{
+  std::vector<std::array<double, 3> > points;
+  std::vector<std::array<std::size_t, 3> > triangles;
+  Chart_edges edges;
+  std::vector<Eigen::Index> elimination_rank;
+  std::vector<std::array<std::array<double, 2>, 3> > frames;
+  std::vector<std::array<double, 3> > cot;
+  std::vector<double> edge_weight, vertex_weight;
+  bool has_frames = false;
+
+  Chart_geometry() = default;
+  Chart_geometry(std::vector<std::array<double, 3> > p, std::vector<std::array<std::size_t, 3> > t)
+    : points(std::move(p)), triangles(std::move(t))
+  {
+    build_chart_edges(points.size(), triangles, edges);
+    elimination_rank = vertex_elimination_rank(points.size(), edges);
+    has_frames = isometric_frames(points, triangles, frames, cot);
+    if(has_frames)
+      cotangent_weights(edges, cot, edge_weight, vertex_weight);
+  }
+};
+
 // As-rigid-as-possible parameterization (Liu et al. 2008) by local/global
 // iterations, free border.
 //
@@ -287,10 +298,10 @@ int local_global_arap(const Chart_geometry& g, std::vector<std::array<double, 2>
   if(n < 3 || nt == 0)
     return 0;
 
-  std::vector<std::array<std::array<double, 2>, 3> > local;
-  std::vector<std::array<double, 3> > cot;
-  if(!isometric_frames(points, triangles, local, cot))
+  if(!g.has_frames)
     return -1;
+  const std::vector<std::array<std::array<double, 2>, 3> >& local = g.frames;
+  const std::vector<std::array<double, 3> >& cot = g.cot;
 
   // Vertex 0 stays where the initial map put it: that removes the
   // translation from the Laplacian's null space and makes it definite.
@@ -301,8 +312,8 @@ int local_global_arap(const Chart_geometry& g, std::vector<std::array<double, 2>
   std::vector<std::size_t> vertex_of(n - 1);
   for(std::size_t v = 1; v < n; ++v)
     vertex_of[std::size_t(unknown(v))] = v;
-  std::vector<double> edge_weight, vertex_weight;
-  cotangent_weights(edges, cot, edge_weight, vertex_weight);
+  const std::vector<double>& edge_weight = g.edge_weight;
+  const std::vector<double>& vertex_weight = g.vertex_weight;
   Eigen::SparseMatrix<double> laplacian;
   assemble_upper_triangle(Eigen::Index(n - 1), n - 1 + edges.ends.size(), [&](Eigen::Index k, const auto& add) {
     const std::size_t v = vertex_of[std::size_t(k)];
