@@ -366,7 +366,6 @@ constexpr double raster_start_over_rectangles = 1.2;
 // The better of the two shape packers' layouts (profile, then raster) at
 // the largest scale each reaches, if that is above `rectangle_scale` (the
 // rectangle packing's); else an empty vector.
-
 template <typename TriangleMesh>
 std::vector<Chart_similarity> shape_layout(const Chart_set<TriangleMesh>& charts, const Packing_settings& s,
                                              const std::vector<double>& density, double rectangle_scale,
