@@ -956,6 +956,93 @@ TEST(Atlas, FreeBorderLscmAndArapKeepAPlanarChartUpToASimilarity)
   EXPECT_EQ(similarity_problem(p.m, c, c.uv, 1e-6), "");
 }
 
+TEST(Atlas, FreeBorderLscmIsStationaryForTheConformalEnergyOnACurvedChart)
+{
+  // LSCM minimizes the conformal energy with two vertices pinned: on a
+  // curved chart (a saddle with a bump, its vertices jittered) the energy's
+  // gradient must vanish at every vertex but the two pins. The energy is
+  // computed here per triangle, sum of A_T |J grad u - grad v|^2 in the
+  // triangle's own frame (J: a quarter turn), not as the library assembles
+  // it (cotangent Laplacian and a border term, in u + iv); its gradient by
+  // central differences, exact for a quadratic up to rounding.
+  Mesh tm = make(TS::disk(6, 12));
+  CGAL::Random rng(11);
+  for(Mesh::Vertex_index v : vertices(tm))
+  {
+    const auto& q = tm.point(v);
+    const double x = q.x() + (is_border(v, tm) ? 0. : rng.get_double(-0.01, 0.01));
+    const double y = q.y() + (is_border(v, tm) ? 0. : rng.get_double(-0.01, 0.01));
+    tm.point(v) = K::Point_3(x, y, 0.3 * (x * x - y * y) + 0.2 * std::exp(-4. * (x * x + y * y)));
+  }
+  DS::internal::Indexed_triangle_mesh m;
+  std::vector<Mesh::Face_index> face_handles;
+  DS::internal::build_indexed_triangle_mesh(tm, DS::parameters::default_values(), m, face_handles);
+  std::vector<DS::internal::Index> all(m.number_of_faces());
+  for(DS::internal::Index f = 0; f < all.size(); ++f) all[f] = f;
+  const DS::internal::Chart c = DS::internal::make_chart(m, all);
+  const std::vector<DS::internal::Index> border = DS::internal::chart_border_loop(c);
+  ASSERT_FALSE(border.empty());
+  const DS::internal::Chart_geometry g = DS::internal::chart_geometry(m, c);
+  std::vector<std::array<double, 2> > uv;
+  ASSERT_TRUE(DS::internal::free_border_lscm(g, std::vector<std::size_t>(border.begin(), border.end()), uv));
+
+  auto energy = [&](const std::vector<std::array<double, 2> >& z) {
+    double e = 0.;
+    for(const auto& t : c.triangles)
+    {
+      const auto& p0 = m.points[c.vertices[t[0]]];
+      const auto& p1 = m.points[c.vertices[t[1]]];
+      const auto& p2 = m.points[c.vertices[t[2]]];
+      const K::Vector_3 e1(p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]);
+      const K::Vector_3 e2(p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]);
+      const K::Vector_3 normal = CGAL::cross_product(e1, e2);
+      const double twice_area = std::sqrt(normal.squared_length());
+      const K::Vector_3 ex = e1 / std::sqrt(e1.squared_length());
+      const K::Vector_3 ey = CGAL::cross_product(normal / twice_area, ex);
+      // Corners in the frame; grad f = sum f_i J (p_k - p_j) / 2A over the
+      // corners i, with j, k the next ones counterclockwise.
+      const double x[3] = { 0., e1 * ex, e2 * ex }, y[3] = { 0., e1 * ey, e2 * ey };
+      double gu[2] = { 0., 0. }, gv[2] = { 0., 0. };
+      for(int i = 0; i < 3; ++i)
+      {
+        const int j = (i + 1) % 3, k = (i + 2) % 3;
+        const double nx = -(y[k] - y[j]), ny = x[k] - x[j];
+        gu[0] += z[t[i]][0] * nx / twice_area; gu[1] += z[t[i]][0] * ny / twice_area;
+        gv[0] += z[t[i]][1] * nx / twice_area; gv[1] += z[t[i]][1] * ny / twice_area;
+      }
+      const double rx = -gu[1] - gv[0], ry = gu[0] - gv[1];  // J grad u - grad v
+      e += 0.5 * twice_area * (rx * rx + ry * ry);
+    }
+    return e;
+  };
+  const double h = 1e-4;
+  std::vector<double> gradient(uv.size());
+  double largest = 0.;
+  for(std::size_t k = 0; k < uv.size(); ++k)
+  {
+    double g2 = 0.;
+    for(int d = 0; d < 2; ++d)
+    {
+      std::vector<std::array<double, 2> > plus(uv), minus(uv);
+      plus[k][d] += h;
+      minus[k][d] -= h;
+      const double gd = (energy(plus) - energy(minus)) / (2 * h);
+      g2 += gd * gd;
+    }
+    gradient[k] = std::sqrt(g2);
+    largest = (std::max)(largest, gradient[k]);
+  }
+  ASSERT_GT(largest, 0.) << "a curved chart has no conformal map: the pins must carry a force";
+  std::size_t not_stationary = 0;
+  for(double gk : gradient)
+    not_stationary += gk > 1e-6 * largest ? 1 : 0;
+  EXPECT_LE(not_stationary, 2u);
+  // The map keeps the 3D winding (not the minimizer's mirror image).
+  for(const auto& t : c.triangles)
+    EXPECT_GT((uv[t[1]][0] - uv[t[0]][0]) * (uv[t[2]][1] - uv[t[0]][1]) -
+                (uv[t[1]][1] - uv[t[0]][1]) * (uv[t[2]][0] - uv[t[0]][0]), 0.);
+}
+
 TEST(Atlas, ChartEdgesListEveryEdgeOnceAroundBothEnds)
 {
   // The edge list the LSCM and ARAP matrices are assembled from, checked

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <complex>
 #include <cstddef>
 #include <vector>
 
@@ -65,7 +66,7 @@ inline bool free_border_lscm(const Chart_geometry& g, const std::vector<std::siz
     return false;
   uv[pin1] = {{ span, 0. }};
 
-  // Free vertex k (in elimination order) has unknowns 2k (u) and 2k+1 (v).
+  // Free vertex k (in elimination order) has the unknown z_k = u_k + i v_k.
   const Eigen::Index none = -1;
   const std::vector<Eigen::Index>& rank = g.elimination_rank;
   std::vector<Eigen::Index> unknown(n, none);
@@ -89,11 +90,17 @@ inline bool free_border_lscm(const Chart_geometry& g, const std::vector<std::siz
       return false;
     border_direction[e] = static_cast<signed char>(edges.ends[e][0] == i ? 1 : -1);
   }
-  // H at (2 x + c, 2 y + 1 - c) for the edge e between x and y: the border
-  // term -1/2 (u_i v_j - u_j v_i) of each border edge i -> j, symmetrized.
-  auto cross = [&](std::size_t x, std::size_t e, int c) {
+  // H's 2 x 2 blocks [a, -b; b, a] act on (u, v) as a + i b acts on z, so
+  // H is the Hermitian matrix Hc of half its size: Hc(x, y) = -w_e + i b
+  // for the edge e between x and y, with b = 1/2 (-1/2) if the border
+  // runs along e from x to y (from y to x), 0 off the border. Its LDL^T
+  // has the vertex graph's pattern, half the entries and about half the
+  // work of the real system's (bunny00: 0.28 s of its 0.38 s of
+  // factorizations went to the real LSCM systems).
+  typedef std::complex<double> Complex;
+  auto entry = [&](std::size_t x, std::size_t e) {
     const double along = edges.ends[e][0] == x ? border_direction[e] : -border_direction[e];
-    return along * (c == 0 ? -0.5 : 0.5);
+    return Complex(-edge_weight[e], 0.5 * along);
   };
   if(free_vertices == 0)
     return true;
@@ -102,41 +109,36 @@ inline bool free_border_lscm(const Chart_geometry& g, const std::vector<std::siz
     if(unknown[v] != none)
       vertex_of[std::size_t(unknown[v])] = v;
   // Pinned neighbors move to the right-hand side.
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(2 * free_vertices);
+  Eigen::VectorXcd rhs = Eigen::VectorXcd::Zero(free_vertices);
   for(std::size_t v = 0; v < n; ++v)
     if(unknown[v] != none)
       for(std::size_t k = edges.first[v]; k < edges.first[v + 1]; ++k)
       {
-        const std::size_t p = edges.neighbor[k], e = edges.edge[k];
+        const std::size_t p = edges.neighbor[k];
         if(unknown[p] == none)
-          for(int c = 0; c < 2; ++c)
-            rhs[2 * unknown[v] + c] += edge_weight[e] * uv[p][c] - cross(v, e, c) * uv[p][1 - c];
+          rhs[unknown[v]] -= entry(v, edges.edge[k]) * Complex(uv[p][0], uv[p][1]);
       }
-  Eigen::SparseMatrix<double> h;
-  assemble_upper_triangle(2 * free_vertices, 2 * std::size_t(free_vertices) + 4 * edges.ends.size(),
+  Eigen::SparseMatrix<Complex> h;
+  assemble_upper_triangle(free_vertices, std::size_t(free_vertices) + edges.ends.size(),
                           [&](Eigen::Index column, const auto& add) {
-    const std::size_t v = vertex_of[std::size_t(column / 2)];
-    const int c = int(column % 2);
-    add(column, vertex_weight[v]);
+    const std::size_t v = vertex_of[std::size_t(column)];
+    add(column, Complex(vertex_weight[v], 0.));
     for(std::size_t k = edges.first[v]; k < edges.first[v + 1]; ++k)
     {
-      const std::size_t w = edges.neighbor[k], e = edges.edge[k];
-      if(unknown[w] == none || unknown[w] >= unknown[v])
-        continue;
-      add(2 * unknown[w] + c, -edge_weight[e]);
-      if(border_direction[e] != 0)
-        add(2 * unknown[w] + 1 - c, cross(w, e, 1 - c));
+      const std::size_t w = edges.neighbor[k];
+      if(unknown[w] != none && unknown[w] < unknown[v])
+        add(unknown[w], entry(w, edges.edge[k]));
     }
   }, h);
-  Ordered_sparse_ldlt solver(h);
+  Ordered_sparse_ldlt<Complex> solver(h);
   if(solver.info() != Eigen::Success)
     return false;
-  const Eigen::VectorXd x = solver.solve(rhs);
+  const Eigen::VectorXcd z = solver.solve(rhs);
   if(solver.info() != Eigen::Success)
     return false;
   for(std::size_t v = 0; v < n; ++v)
     if(unknown[v] != none)
-      uv[v] = {{ x[2 * unknown[v]], x[2 * unknown[v] + 1] }};
+      uv[v] = {{ z[unknown[v]].real(), z[unknown[v]].imag() }};
   return true;
 }
 

@@ -106,21 +106,21 @@ inline void build_chart_edges(std::size_t n, const std::vector<std::array<std::s
 // Builds the upper triangle of a symmetric `size` x `size` matrix in place,
 // column by column: `column(k, add)` calls `add(row, value)` once for each
 // entry of column k at a row <= k, in any order.
-template <typename Column>
+template <typename Scalar, typename Column>
 void assemble_upper_triangle(Eigen::Index size, std::size_t non_zeros, const Column& column,
-                             Eigen::SparseMatrix<double>& a)
+                             Eigen::SparseMatrix<Scalar>& a)
 {
   a.resize(size, size);
   a.resizeNonZeros(Eigen::Index(non_zeros));
   int* outer = a.outerIndexPtr();
   int* inner = a.innerIndexPtr();
-  double* value = a.valuePtr();
+  Scalar* value = a.valuePtr();
   int next = 0;
   for(Eigen::Index k = 0; k < size; ++k)
   {
     outer[k] = next;
     const int begin = next;
-    column(k, [&](Eigen::Index row, double v) {
+    column(k, [&](Eigen::Index row, Scalar v) {
       CGAL_assertion(row <= k && next < int(non_zeros));
       // Insertion in row order: a column holds a few entries.
       int j = next++;
@@ -181,8 +181,50 @@ inline std::vector<Eigen::Index> vertex_elimination_rank(std::size_t n, const Ch
 // Sparse LDL^T on a matrix already in elimination order; only its upper
 // triangle is read, so only that is assembled (the upper one: the solver
 // would copy a lower one into it).
-typedef Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Upper, Eigen::NaturalOrdering<int> >
-  Ordered_sparse_ldlt;
+template <typename Scalar>
+using Ordered_sparse_ldlt =
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<Scalar>, Eigen::Upper, Eigen::NaturalOrdering<int> >;
+
+// Solves L D L^T x = b for two right-hand sides at once, in place (b as
+// pairs): Eigen's triangular solves go over the factor once per column,
+// twice as often; the solves were 7 % of bunny00's time (perf, one thread).
+inline void solve_pairs(const Ordered_sparse_ldlt<double>& solver, std::vector<std::array<double, 2> >& x)
+{
+  const Eigen::SparseMatrix<double>& l = solver.matrixL().nestedExpression();
+  CGAL_precondition(solver.permutationP().size() == 0 && l.isCompressed() && std::size_t(l.cols()) == x.size());
+  const int* outer = l.outerIndexPtr();
+  const int* inner = l.innerIndexPtr();
+  const double* value = l.valuePtr();
+  const Eigen::VectorXd& d = solver.vectorD();
+  const int n = int(x.size());
+  // L is unit lower triangular, its diagonal not stored.
+  for(int j = 0; j < n; ++j)
+  {
+    const double a = x[j][0], b = x[j][1];
+    for(int p = outer[j]; p < outer[j + 1]; ++p)
+    {
+      x[inner[p]][0] -= value[p] * a;
+      x[inner[p]][1] -= value[p] * b;
+    }
+  }
+  for(int j = 0; j < n; ++j)
+  {
+    // As Eigen does it (by the inverse), so that the charts stay the same.
+    const double inverse = 1. / d[j];
+    x[j][0] *= inverse;
+    x[j][1] *= inverse;
+  }
+  for(int j = n - 1; j >= 0; --j)
+  {
+    double a = x[j][0], b = x[j][1];
+    for(int p = outer[j]; p < outer[j + 1]; ++p)
+    {
+      a -= value[p] * x[inner[p]][0];
+      b -= value[p] * x[inner[p]][1];
+    }
+    x[j] = {{ a, b }};
+  }
+}
 
 // The cotangent weight of each edge (half the sum of the cotangents of the
 // angles opposite to it) and their sum around each vertex: the cotangent
@@ -325,14 +367,14 @@ int local_global_arap(const Chart_geometry& g, std::vector<std::array<double, 2>
         add(unknown(w), -edge_weight[edges.edge[j]]);
     }
   }, laplacian);
-  Ordered_sparse_ldlt solver(laplacian);
+  Ordered_sparse_ldlt<double> solver(laplacian);
   if(solver.info() != Eigen::Success)
     return -1;
 
   std::vector<std::array<double, 4> > rotation(nt);
   std::vector<std::array<double, 2> > previous;
   // u and v solved together: one pass over the factor for both.
-  Eigen::MatrixXd rhs(n - 1, 2);
+  std::vector<std::array<double, 2> > x(n - 1);
   for(int iteration = 0; iteration < iterations; ++iteration)
   {
     // Local step: the rotation closest to each triangle's current map.
@@ -356,7 +398,7 @@ int local_global_arap(const Chart_geometry& g, std::vector<std::array<double, 2>
     }
 
     // Global step: L u = sum of w R (x_a - x_b) over edges, vertex 0 fixed.
-    rhs.setZero();
+    std::fill(x.begin(), x.end(), std::array<double, 2>{{ 0., 0. }});
     for(std::size_t t = 0; t < nt; ++t)
     {
       const auto& r = rotation[t];
@@ -366,20 +408,17 @@ int local_global_arap(const Chart_geometry& g, std::vector<std::array<double, 2>
         const double w = 0.5 * cot[t][i];
         const double dxx = local[t][i][0] - local[t][(i + 1) % 3][0], dxy = local[t][i][1] - local[t][(i + 1) % 3][1];
         const double ru = r[0] * dxx + r[1] * dxy, rv = r[2] * dxx + r[3] * dxy;
-        if(a != 0) { rhs(unknown(a), 0) += w * ru; rhs(unknown(a), 1) += w * rv; }
-        if(b != 0) { rhs(unknown(b), 0) -= w * ru; rhs(unknown(b), 1) -= w * rv; }
+        if(a != 0) { x[unknown(a)][0] += w * ru; x[unknown(a)][1] += w * rv; }
+        if(b != 0) { x[unknown(b)][0] -= w * ru; x[unknown(b)][1] -= w * rv; }
         // Move the fixed vertex's known term to the right-hand side.
-        if(a == 0 && b != 0) { rhs(unknown(b), 0) += w * uv[0][0]; rhs(unknown(b), 1) += w * uv[0][1]; }
-        if(b == 0 && a != 0) { rhs(unknown(a), 0) += w * uv[0][0]; rhs(unknown(a), 1) += w * uv[0][1]; }
+        if(a == 0 && b != 0) { x[unknown(b)][0] += w * uv[0][0]; x[unknown(b)][1] += w * uv[0][1]; }
+        if(b == 0 && a != 0) { x[unknown(a)][0] += w * uv[0][0]; x[unknown(a)][1] += w * uv[0][1]; }
       }
     }
-    const Eigen::MatrixXd x = solver.solve(rhs);
-    if(solver.info() != Eigen::Success)
-      return iteration;
-    auto u = x.col(0), v = x.col(1);
+    solve_pairs(solver, x);
     previous = uv;
     for(std::size_t i = 1; i < n; ++i)
-      uv[i] = {{ u[unknown(i)], v[unknown(i)] }};
+      uv[i] = x[unknown(i)];
     // A rejected iterate is pulled back toward the last valid one: a
     // shorter step along the same direction often stays valid and still
     // lowers the energy. At most 8 shorter steps (1/2 down to 1/256) per
@@ -395,8 +434,8 @@ int local_global_arap(const Chart_geometry& g, std::vector<std::array<double, 2>
         return iteration;
       }
       for(std::size_t i = 1; i < n; ++i)
-        uv[i] = {{ previous[i][0] + step * (u[unknown(i)] - previous[i][0]),
-                   previous[i][1] + step * (v[unknown(i)] - previous[i][1]) }};
+        uv[i] = {{ previous[i][0] + step * (x[unknown(i)][0] - previous[i][0]),
+                   previous[i][1] + step * (x[unknown(i)][1] - previous[i][1]) }};
     }
   }
   return iterations;
