@@ -16,6 +16,7 @@
 #include <CGAL/Random.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <Eigen/Dense>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -1041,6 +1042,44 @@ TEST(Atlas, FreeBorderLscmIsStationaryForTheConformalEnergyOnACurvedChart)
   for(const auto& t : c.triangles)
     EXPECT_GT((uv[t[1]][0] - uv[t[0]][0]) * (uv[t[2]][1] - uv[t[0]][1]) -
                 (uv[t[1]][1] - uv[t[0]][1]) * (uv[t[2]][0] - uv[t[0]][0]), 0.);
+}
+
+TEST(Atlas, PairedSolvesMatchADenseSolveOfTheSameSystem)
+{
+  // ARAP solves its u and v right-hand sides in one pass over the sparse
+  // LDL^T factor (solve_pairs). Checked against a dense Cholesky solve of
+  // the same matrix, rebuilt here entry by entry: a symmetric positive
+  // definite band (a path's Laplacian with longer links, shifted), so that
+  // the factor has fill and every column of L has several entries.
+  const int n = 120;
+  auto entry = [](int i, int j) {
+    if(i == j) return 4.5 + 0.01 * i;
+    const int d = std::abs(i - j);
+    return d == 1 ? -1. : d == 5 ? -0.75 : d == 17 ? -0.25 : 0.;
+  };
+  Eigen::SparseMatrix<double> a;
+  DS::internal::assemble_upper_triangle(Eigen::Index(n), std::size_t(4 * n), [&](Eigen::Index k, const auto& add) {
+    for(int i = 0; i <= int(k); ++i)
+      if(entry(i, int(k)) != 0.)
+        add(Eigen::Index(i), entry(i, int(k)));
+  }, a);
+  const DS::internal::Ordered_sparse_ldlt<double> solver(a);
+  ASSERT_EQ(solver.info(), Eigen::Success);
+  Eigen::MatrixXd dense(n, n), b(n, 2);
+  std::vector<std::array<double, 2> > x(n);
+  for(int i = 0; i < n; ++i)
+  {
+    for(int j = 0; j < n; ++j)
+      dense(i, j) = entry(i, j);
+    x[i] = {{ std::sin(0.3 * i) + 0.5, std::cos(0.7 * i) - 0.25 * i }};
+    b(i, 0) = x[i][0];
+    b(i, 1) = x[i][1];
+  }
+  DS::internal::solve_pairs(solver, x);
+  const Eigen::MatrixXd expected = dense.llt().solve(b);
+  for(int i = 0; i < n; ++i)
+    for(int c = 0; c < 2; ++c)
+      EXPECT_NEAR(x[i][c], expected(i, c), 1e-10 * (1. + std::abs(expected(i, c)))) << "row " << i << ", column " << c;
 }
 
 TEST(Atlas, ChartEdgesListEveryEdgeOnceAroundBothEnds)
