@@ -911,27 +911,34 @@ std::string similarity_problem(const DS::internal::Indexed_triangle_mesh& m, con
   return scale > 0 ? std::string() : std::string("zero scale");
 }
 
-struct Planar_chart
+struct Disk_chart
 {
   Mesh tm;
   DS::internal::Indexed_triangle_mesh m;
   std::vector<Mesh::Face_index> face_handles;
 };
 
-void make_planar_chart(Planar_chart& p)
+// A disk, its inner vertices moved in the plane (by less than a third of
+// the shortest edge, so no triangle folds) so that no two triangles have
+// the same shape, then lifted to z = height(x, y).
+template <typename Height>
+void make_disk_chart(Disk_chart& p, const Height& height)
 {
-  // A disk in z = 0, its inner vertices moved in the plane (by less than a
-  // third of the shortest edge, so no triangle folds) so that no two
-  // triangles have the same shape.
   p.tm = make(TS::disk(6, 12));
   CGAL::Random rng(7);
   for(Mesh::Vertex_index v : vertices(p.tm))
-    if(!is_border(v, p.tm))
-    {
-      const auto& q = p.tm.point(v);
-      p.tm.point(v) = K::Point_3(q.x() + rng.get_double(-0.01, 0.01), q.y() + rng.get_double(-0.01, 0.01), 0.);
-    }
+  {
+    const auto& q = p.tm.point(v);
+    const double x = q.x() + (is_border(v, p.tm) ? 0. : rng.get_double(-0.01, 0.01));
+    const double y = q.y() + (is_border(v, p.tm) ? 0. : rng.get_double(-0.01, 0.01));
+    p.tm.point(v) = K::Point_3(x, y, height(x, y));
+  }
   DS::internal::build_indexed_triangle_mesh(p.tm, DS::parameters::default_values(), p.m, p.face_handles);
+}
+
+void make_planar_chart(Disk_chart& p)
+{
+  make_disk_chart(p, [](double, double) { return 0.; });
 }
 
 } // namespace
@@ -940,7 +947,7 @@ TEST(Atlas, FreeBorderLscmAndArapKeepAPlanarChartUpToASimilarity)
 {
   // A planar chart has a conformal (indeed isometric) flattening: LSCM must
   // find it up to a similarity, and ARAP from it must keep it.
-  Planar_chart p;
+  Disk_chart p;
   make_planar_chart(p);
   std::vector<DS::internal::Index> all(p.m.number_of_faces());
   for(DS::internal::Index f = 0; f < all.size(); ++f) all[f] = f;
@@ -966,18 +973,9 @@ TEST(Atlas, FreeBorderLscmIsStationaryForTheConformalEnergyOnACurvedChart)
   // triangle's own frame (J: a quarter turn), not as the library assembles
   // it (cotangent Laplacian and a border term, in u + iv); its gradient by
   // central differences, exact for a quadratic up to rounding.
-  Mesh tm = make(TS::disk(6, 12));
-  CGAL::Random rng(11);
-  for(Mesh::Vertex_index v : vertices(tm))
-  {
-    const auto& q = tm.point(v);
-    const double x = q.x() + (is_border(v, tm) ? 0. : rng.get_double(-0.01, 0.01));
-    const double y = q.y() + (is_border(v, tm) ? 0. : rng.get_double(-0.01, 0.01));
-    tm.point(v) = K::Point_3(x, y, 0.3 * (x * x - y * y) + 0.2 * std::exp(-4. * (x * x + y * y)));
-  }
-  DS::internal::Indexed_triangle_mesh m;
-  std::vector<Mesh::Face_index> face_handles;
-  DS::internal::build_indexed_triangle_mesh(tm, DS::parameters::default_values(), m, face_handles);
+  Disk_chart p;
+  make_disk_chart(p, [](double x, double y) { return 0.3 * (x * x - y * y) + 0.2 * std::exp(-4. * (x * x + y * y)); });
+  const DS::internal::Indexed_triangle_mesh& m = p.m;
   std::vector<DS::internal::Index> all(m.number_of_faces());
   for(DS::internal::Index f = 0; f < all.size(); ++f) all[f] = f;
   const DS::internal::Chart c = DS::internal::make_chart(m, all);
@@ -1089,7 +1087,7 @@ TEST(Atlas, ChartEdgesListEveryEdgeOnceAroundBothEnds)
   // maps to the edge joining its two corners, each edge is some side, the
   // chart (a disk) has V - E + F = 1, and every vertex lists each neighbor
   // once, in increasing order, with the edge that joins them.
-  Planar_chart p;
+  Disk_chart p;
   make_planar_chart(p);
   std::vector<DS::internal::Index> all(p.m.number_of_faces());
   for(DS::internal::Index f = 0; f < all.size(); ++f) all[f] = f;
@@ -1141,7 +1139,7 @@ TEST(Atlas, TwoChartMapsGlueIntoTheMapOfTheirUnion)
   // Two halves of a planar chart, each laid out by its own similarity (other
   // rotation, scale and place): glued, they give one similarity of the
   // whole, and ARAP from the glued map keeps it.
-  Planar_chart p;
+  Disk_chart p;
   make_planar_chart(p);
   std::vector<DS::internal::Index> left, right, all;
   for(DS::internal::Index f = 0; f < p.m.number_of_faces(); ++f)
