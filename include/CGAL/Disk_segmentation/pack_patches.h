@@ -475,8 +475,11 @@ std::vector<Chart_similarity> shape_layout(const Chart_set<TriangleMesh>& charts
       double next = used > 0. ? scale * std::sqrt(target / used) : 0.;
       if(packed && !(next > fit * (1. + 0.5 * tol)))
         next = fit * (1. + tol);
+      // Before any fit, bisect from the rectangles' scale, which every chart
+      // fits: a trial where some chart is wider than the square at any turn
+      // (a long chart) says nothing about the rows.
       if(!(next > fit) || !(next < fail))
-        next = 0.5 * (fit + fail);
+        next = 0.5 * ((fit > 0. ? fit : rectangle_scale) + fail);
       scale = next;
     }
     if(fit > lo)
