@@ -176,7 +176,7 @@ int main(int argc, char** argv)
   app.add_flag("--unbounded", unbounded,
                "no distortion bound: the paper's charts (only invalid ones are redone or split)");
   app.add_flag("--rough-borders", rough_borders,
-               "keep the saw teeth of chart borders (the paper's segmentation; smoothed by default)");
+               "keep the saw teeth of chart borders (the paper's segmentation; smoothed and straightened by default)");
   app.add_option("--max-chart-faces", max_chart_faces,
                  "split larger patches before parameterizing them (bounds memory)")->capture_default_str()->check(non_negative_count);
   app.add_option("--threads", threads, "maximum number of threads (0: all)")->capture_default_str()->check(non_negative_count);
@@ -247,6 +247,7 @@ int main(int argc, char** argv)
         .max_stretch(unbounded ? inf : bound.max_stretch).max_area_scale(unbounded ? inf : bound.max_area_scale)
         .max_stretch_p95(unbounded ? inf : bound.max_stretch_p95)
         .smooth_borders(!rough_borders)
+        .straighten_borders(!rough_borders)
         .max_chart_faces(max_chart_faces).packing_method(packer)
         .texture_resolution(resolution).padding_in_texels(padding).number_of_threads(threads);
     DS::check_uv_atlas_parameters(settings);

@@ -95,7 +95,7 @@ def atlas(vertices, faces, method=_disk_uv.default_parameterization_method,
         max_angle_distortion, max_area_distortion, max_stretch, max_area_scale,
         max_stretch_p95: the distortion bound every chart meets (see the manual).
         unbounded: no distortion bound (the paper's charts).
-        rough_borders: keep the saw-toothed chart borders of the paper.
+        rough_borders: keep the saw-toothed chart borders of the paper (neither smoothed nor straightened).
         resolution, padding: texture side and gap between charts, in texels.
         threads: at most this many threads (0: all); the result does not depend on it.
         seed: None (deterministic default first seed) or an integer seed.

@@ -358,6 +358,7 @@ py::dict run_atlas(const py::handle& vertices, const py::handle& faces, const py
       .max_stretch(unbounded ? inf : bound.max_stretch).max_area_scale(unbounded ? inf : bound.max_area_scale)
       .max_stretch_p95(unbounded ? inf : bound.max_stretch_p95)
       .smooth_borders(!o["rough_borders"].cast<bool>())
+      .straighten_borders(!o["rough_borders"].cast<bool>())
       .max_chart_faces(count_option(o, "max_chart_faces")).packing_method(packer)
       .texture_resolution(static_cast<unsigned int>(resolution)).padding_in_texels(real_option(o, "padding"))
       .number_of_threads(static_cast<unsigned int>(threads));

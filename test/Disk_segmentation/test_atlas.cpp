@@ -25,6 +25,7 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -333,6 +334,94 @@ TEST(Atlas, SmoothedBordersAreShorterWithFewerTeethAndStayDisks)
   }
 }
 
+// Length of the edges between regions a and b of an indexed mesh, summed
+// over the faces of a (each such edge has exactly one face in a).
+double shared_length(const DS::internal::Indexed_triangle_mesh& m, const std::vector<DS::internal::Index>& labels,
+                     DS::internal::Index a, DS::internal::Index b)
+{
+  double length = 0.;
+  for(DS::internal::Index f = 0; f < m.number_of_faces(); ++f)
+    for(int e = 0; e < 3; ++e)
+    {
+      const DS::internal::Index g = m.neighbors[f][e];
+      if(labels[f] == a && g != DS::internal::no_index && labels[g] == b)
+        length += DS::internal::Indexed_triangle_mesh::distance(m.points[m.corners[f][e]],
+                                                                 m.points[m.corners[f][(e + 1) % 3]]);
+    }
+  return length;
+}
+
+TEST(Atlas, ReroutedBorderArcsAreShorterAndTheRegionsStayDisks)
+{
+  for(const char* name : { "elephant.off", "knot1.off" })
+  {
+    SCOPED_TRACE(name);
+    Mesh tm = load(name);
+    Patch_map patch = tm.add_property_map<Mesh::Face_index, std::size_t>("f:patch", 0).first;
+    // The refined regions with their saw teeth: borders to straighten.
+    const std::size_t regions =
+      DS::segment_into_disks(tm, patch, DS::parameters::number_of_seeds(30).merge_threshold(1e9));
+    DS::internal::Indexed_triangle_mesh m;
+    std::vector<Mesh::Face_index> face_handles;
+    DS::internal::build_indexed_triangle_mesh(tm, DS::parameters::default_values(), m, face_handles);
+    std::vector<DS::internal::Index> labels(m.number_of_faces());
+    std::vector<std::size_t> size(regions, 0);
+    for(DS::internal::Index f = 0; f < m.number_of_faces(); ++f)
+    {
+      labels[f] = static_cast<DS::internal::Index>(patch[face_handles[f]]);
+      ++size[labels[f]];
+    }
+    const Border_measure before = measure_borders(tm, patch);
+
+    DS::internal::Border_router router(m);
+    router.assign(labels, regions);
+    DS::internal::Region_topology topology(m);
+    std::vector<char> locked(m.number_of_faces(), 0);
+    const double least_gain = 0.02;
+    std::size_t rerouted = 0;
+    for(const DS::internal::Border_arc& arc : router.arcs(labels))
+    {
+      ASSERT_GE(arc.vertices.size(), 2u);
+      double arc_length = 0.;
+      for(std::size_t i = 0; i + 1 < arc.vertices.size(); ++i)
+        arc_length += DS::internal::Indexed_triangle_mesh::distance(m.points[arc.vertices[i]],
+                                                                     m.points[arc.vertices[i + 1]]);
+      const std::vector<DS::internal::Index> old = labels;
+      const double shared_before = shared_length(m, labels, arc.a, arc.b);
+      ASSERT_GE(shared_before, arc_length * (1. - 1e-9)) << "an arc runs along the border of its two regions";
+      DS::internal::Arc_change change;
+      if(!router.reroute(labels, size, locked, topology, arc, least_gain, change))
+      {
+        ASSERT_EQ(labels, old) << "a refused reroute changes nothing";
+        continue;
+      }
+      ++rerouted;
+      std::size_t moved = 0;
+      for(DS::internal::Index f = 0; f < m.number_of_faces(); ++f)
+        if(labels[f] != old[f])
+        {
+          ++moved;
+          ASSERT_TRUE((old[f] == arc.a && labels[f] == arc.b) || (old[f] == arc.b && labels[f] == arc.a))
+            << "only the arc's two regions trade faces";
+        }
+      EXPECT_EQ(moved, change.old_labels.size());
+      EXPECT_LE(shared_length(m, labels, arc.a, arc.b), shared_before - least_gain * arc_length + 1e-12);
+      for(const auto& f : change.old_labels)
+        locked[f.first] = 1;
+    }
+    ASSERT_GT(rerouted, 0u) << "nothing was rerouted: the test is void";
+    for(DS::internal::Index f = 0; f < m.number_of_faces(); ++f)
+      patch[face_handles[f]] = labels[f];
+    const TS::Partition_report partition = TS::check_disk_partition(tm, patch);
+    EXPECT_TRUE(partition.ok) << partition.problem;
+    std::set<std::size_t> ids;
+    for(Mesh::Face_index f : tm.faces())
+      ids.insert(patch[f]);
+    EXPECT_EQ(ids.size(), regions) << "no region disappears";
+    EXPECT_LT(measure_borders(tm, patch).length, before.length);
+  }
+}
+
 TEST(Atlas, ChartsAreMergeTreeNodesOrPiecesOfOneLeaf)
 {
   Mesh tm = load("elephant.off");
@@ -364,9 +453,11 @@ TEST(Atlas, ChartsAreMergeTreeNodesOrPiecesOfOneLeaf)
   }
   // Charts chosen top-down: each is a node, or lies inside one leaf.
   UV_map uv = tm.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:uv", K::Point_2(0, 0)).first;
-  // Without the merging of accepted charts, which may join pieces of two leaves.
-  const DS::Parameterization_report report =
-    DS::parameterize_patches(tm, patch, uv, DS::parameters::merge_tree(&tree).merge_charts(false));
+  // Without the merging of accepted charts, which may join pieces of two
+  // leaves, and the straightening of their borders, which trades faces
+  // between charts.
+  const DS::Parameterization_report report = DS::parameterize_patches(
+    tm, patch, uv, DS::parameters::merge_tree(&tree).merge_charts(false).straighten_borders(false));
   EXPECT_GT(report.charts.size(), patches);
   std::vector<std::vector<std::size_t> > sorted_nodes = node_faces;
   std::sort(sorted_nodes.begin(), sorted_nodes.end());

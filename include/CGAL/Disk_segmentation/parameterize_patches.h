@@ -14,6 +14,7 @@
 #include <CGAL/Disk_segmentation/parameters.h>
 #include <CGAL/Disk_segmentation/refine_to_topological_disks.h>
 #include <CGAL/Disk_segmentation/internal/Border_smoother.h>
+#include <CGAL/Disk_segmentation/internal/Chart_rerouting.h>
 #include <CGAL/Disk_segmentation/internal/Chart_distortion.h>
 #include <CGAL/Disk_segmentation/internal/Chart_merging.h>
 #include <CGAL/Disk_segmentation/internal/Chart_parameterization.h>
@@ -133,7 +134,7 @@ struct Parameterization_settings
   unsigned int threads;
   Distortion_bound bound;
   std::size_t max_chart_faces;
-  bool smooth_borders, merge_charts;
+  bool smooth_borders, merge_charts, straighten_borders;
 };
 
 // The distortion bound from its four named parameters.
@@ -175,6 +176,8 @@ Parameterization_settings parameterization_settings(const NamedParameters& np)
   s.bound = distortion_bound_parameters(np);
   s.smooth_borders = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::smooth_borders), true);
   s.merge_charts = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::merge_charts), true);
+  s.straighten_borders =
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::straighten_borders), true);
   s.max_chart_faces = count_parameter(
     choose_parameter(get_parameter(np, Disk_segmentation::internal_np::max_chart_faces), default_max_chart_faces),
     "max_chart_faces");
@@ -834,6 +837,9 @@ Parameterization_report parameterize_patches_with_tree(const TriangleMesh& tm, F
     internal::merge_kept_charts(m, topology, kept, needs_split, method, use_fallback,
                                 [&](std::size_t n, const auto& work) { internal::for_each_index(n, threads, work); },
                                 rejected_regions);
+  if(bounded && settings.straighten_borders)
+    internal::reroute_kept_charts(m, topology, kept, needs_split, method, use_fallback,
+                                  [&](std::size_t n, const auto& work) { internal::for_each_index(n, threads, work); });
   progress("parameterization", number_of_patches, number_of_patches);
 
   // Each patch's charts in tree order; the first keeps the patch's id if
@@ -1016,6 +1022,15 @@ Parameterization_report parameterize_patches_with_tree(const TriangleMesh& tm, F
 ///     \cgalParamDescription{whether adjacent charts are merged, once chosen, when their union is a disk
 ///       that meets the bound (only with `use_fallback` and a bound); merged charts may join pieces of
 ///       different patches}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{straighten_borders}
+///     \cgalParamDescription{whether, once the charts are chosen and merged, each border arc between
+///       two of them (from one junction to the next) is replaced by a shorter edge path near it that
+///       prefers creases, the faces in between changing sides; the changed charts are parameterized
+///       again, and an arc is given back wherever a chart stops being a disk or meeting the bound
+///       (only with `use_fallback` and a bound). Not in the paper.}
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd

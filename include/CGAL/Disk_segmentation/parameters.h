@@ -47,6 +47,7 @@ enum merge_tree_t { merge_tree };
 enum distortion_bound_t { distortion_bound };
 enum smooth_borders_t { smooth_borders };
 enum merge_charts_t { merge_charts };
+enum straighten_borders_t { straighten_borders };
 
 } // namespace internal_np
 
@@ -107,6 +108,7 @@ struct Named_function_parameters
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(distortion_bound_t, distortion_bound)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(smooth_borders_t, smooth_borders)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(merge_charts_t, merge_charts)
+  CGAL_DISK_SEGMENTATION_ADD_PARAMETER(straighten_borders_t, straighten_borders)
 #undef CGAL_DISK_SEGMENTATION_ADD_PARAMETER
 };
 
@@ -205,6 +207,10 @@ CGAL_DISK_SEGMENTATION_ADD_PARAMETER(smooth_borders_t, smooth_borders)
 /// \ingroup PkgDiskSegmentationRef
 /// Whether adjacent charts that meet the distortion bound together are merged (`bool`; see `parameterize_patches()`).
 CGAL_DISK_SEGMENTATION_ADD_PARAMETER(merge_charts_t, merge_charts)
+/// \ingroup PkgDiskSegmentationRef
+/// Whether the borders between the final charts are rerouted along shorter paths, the charts
+/// parameterized again and kept only where they still meet the bound (`bool`; see `parameterize_patches()`).
+CGAL_DISK_SEGMENTATION_ADD_PARAMETER(straighten_borders_t, straighten_borders)
 /// \ingroup PkgDiskSegmentationRef
 /// Pointer to a `Merge_tree` that `merge_disk_regions()` and `segment_into_disks()` fill,
 /// and that `parameterize_patches()` reads to choose charts top-down (`Merge_tree*`).

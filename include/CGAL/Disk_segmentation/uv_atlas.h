@@ -99,6 +99,12 @@ void check_uv_atlas_parameters(const NamedParameters& np = parameters::default_v
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`true` (not in the paper)}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{straighten_borders}
+///     \cgalParamDescription{whether the borders between the final charts are rerouted along shorter
+///       paths where the charts still meet the bound (see `parameterize_patches()`)}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true` (not in the paper)}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{merge_tree}
 ///     \cgalParamDescription{receives the merges of the segmentation, from which the charts are
 ///       chosen top-down (see `parameterize_patches()`)}

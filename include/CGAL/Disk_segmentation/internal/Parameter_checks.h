@@ -79,6 +79,7 @@ typedef std::tuple<
   Disk_segmentation::internal_np::max_area_scale_t, Disk_segmentation::internal_np::max_stretch_p95_t,
   Disk_segmentation::internal_np::merge_tree_t, Disk_segmentation::internal_np::distortion_bound_t,
   Disk_segmentation::internal_np::smooth_borders_t, Disk_segmentation::internal_np::merge_charts_t,
+  Disk_segmentation::internal_np::straighten_borders_t,
   CGAL::internal_np::vertex_point_t, CGAL::internal_np::geom_traits_t, CGAL::internal_np::face_index_t,
   CGAL::internal_np::vertex_index_t, CGAL::internal_np::random_seed_t, CGAL::internal_np::face_patch_t,
   CGAL::internal_np::all_default_t>
