@@ -240,9 +240,10 @@ private:
     while(x + f.width <= side)
     {
       long jump = -1;
-      for(long k = 0; k < f.height && jump < 0; ++k)
+      // Rows from failed_row on, wrapping around (no division: this loop
+      // is most of the packing time).
+      for(long k = 0, r = failed_row; k < f.height && jump < 0; ++k, r = (r + 1 == f.height ? 0 : r + 1))
       {
-        const long r = (failed_row + k) % f.height;
         const std::size_t row = static_cast<std::size_t>(y + r) * n_;
         for(std::size_t j = f.zone_begin[r]; j < f.zone_begin[r + 1]; ++j)
         {
