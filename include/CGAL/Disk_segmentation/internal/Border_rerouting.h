@@ -226,11 +226,9 @@ public:
     const std::size_t size_b = faces_ab.size() - size_a;
     if(change.old_labels.empty() || size_a < smallest_region || size_b < smallest_region)
       return false;
-    std::vector<Index> new_a, new_b;
+    std::vector<Index> new_a, new_b;  // sorted, as faces_ab is
     for(Index f : faces_ab)
       (side_[f] == 1 ? new_a : new_b).push_back(f);
-    std::sort(new_a.begin(), new_a.end());
-    std::sort(new_b.begin(), new_b.end());
     if(!topology.is_disk(new_a) || !topology.is_disk(new_b))
       return false;
     for(const auto& moved : change.old_labels)

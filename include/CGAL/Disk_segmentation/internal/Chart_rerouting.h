@@ -46,29 +46,17 @@ inline double bound_load(const Chart_distortion& d, const Distortion_bound& boun
 // cut 424.6, +11 %; at 0.8, 170 of 391 kept.
 constexpr double largest_reroute_load = 0.9;
 
-// Straightens the borders between the kept charts (see Border_router), then
-// parameterizes again every chart whose faces changed. A chart that is then
-// invalid, no longer a disk, above the size cap or over the bound (`rule`)
-// gives back arcs it took part in (see give_back below), which changes its
-// neighbors in turn; rounds go on until every changed chart meets the
-// bound, and a chart whose arcs were all given back keeps its former map.
-// Arcs are rerouted one after another in a fixed order and charts are
-// parameterized independently, so the result does not depend on the
-// schedule. Returns the number of arcs kept rerouted.
-template <typename Rule, typename ForEach>
-std::size_t reroute_kept_charts(const Indexed_triangle_mesh& m, Region_topology& topology,
-                                std::vector<Kept_chart>& kept, const Rule& rule, Parameterization_method method,
-                                bool use_fallback, const ForEach& for_each)
+// Reroutes the arcs between the charts `labels` gives (per face, the index
+// in `kept`; `size`: faces per chart, both updated) one after another, and
+// returns the changes made. The router's per-vertex and per-face arrays are
+// freed on return, before the charts are solved again, where the memory
+// peaks.
+template <typename Rule>
+std::vector<Arc_change> reroute_arcs(const Indexed_triangle_mesh& m, Region_topology& topology,
+                                     const std::vector<Kept_chart>& kept, const Rule& rule,
+                                     std::vector<Index>& labels, std::vector<std::size_t>& size)
 {
   const std::size_t n = kept.size();
-  std::vector<Index> labels(m.number_of_faces(), no_index);
-  std::vector<std::size_t> size(n, 0);
-  for(std::size_t i = 0; i < n; ++i)
-  {
-    for(Index f : kept[i].chart.faces)
-      labels[f] = static_cast<Index>(i);
-    size[i] = kept[i].chart.faces.size();
-  }
   Border_router router(m);
   router.assign(labels, n);
   std::vector<char> locked(m.number_of_faces(), 0);
@@ -97,6 +85,33 @@ std::size_t reroute_kept_charts(const Indexed_triangle_mesh& m, Region_topology&
       locked[moved.first] = 1;
     changes.push_back(std::move(change));
   }
+  return changes;
+}
+
+// Straightens the borders between the kept charts (see Border_router), then
+// parameterizes again every chart whose faces changed. A chart that is then
+// invalid, no longer a disk, above the size cap or over the bound (`rule`)
+// gives back arcs it took part in (see give_back below), which changes its
+// neighbors in turn; rounds go on until every changed chart meets the
+// bound, and a chart whose arcs were all given back keeps its former map.
+// Arcs are rerouted one after another in a fixed order and charts are
+// parameterized independently, so the result does not depend on the
+// schedule. Returns the number of arcs kept rerouted.
+template <typename Rule, typename ForEach>
+std::size_t reroute_kept_charts(const Indexed_triangle_mesh& m, Region_topology& topology,
+                                std::vector<Kept_chart>& kept, const Rule& rule, Parameterization_method method,
+                                bool use_fallback, const ForEach& for_each)
+{
+  const std::size_t n = kept.size();
+  std::vector<Index> labels(m.number_of_faces(), no_index);
+  std::vector<std::size_t> size(n, 0);
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    for(Index f : kept[i].chart.faces)
+      labels[f] = static_cast<Index>(i);
+    size[i] = kept[i].chart.faces.size();
+  }
+  std::vector<Arc_change> changes = reroute_arcs(m, topology, kept, rule, labels, size);
   if(changes.empty())
     return 0;
 
