@@ -149,6 +149,10 @@ struct Chart_set
   // patch), so that each chart is read from one contiguous run; patch p
   // owns the corners [3 first_face[p], 3 first_face[p + 1]).
   std::vector<Packing_point> corners;
+  // Per face, in the order of `corners`: bit j is set when the edge from
+  // corner j to corner j + 1 is on its chart's border (the next face is in
+  // another patch or none, or the two faces give its ends different UVs).
+  std::vector<unsigned char> border_edges;
   // Corners are stored relative to their chart's first UV: a chart 1e-13
   // wide placed at 0.45 would otherwise lose its shape to cancellation
   // when it is moved to its place.
@@ -162,6 +166,25 @@ struct Chart_set
 
   std::size_t size() const { return uv_area.size(); }
 };
+
+// Whether the edge of halfedge `h` (of a face of patch `p`) is on its
+// chart's border: no face across it, a face of another patch, or one that
+// gives either end another UV (a seam inside the patch). The patch id
+// across is compared unchecked: an invalid one is another patch anyway.
+template <typename TriangleMesh, typename FacePatchMap, typename UVMap>
+bool on_chart_border(const TriangleMesh& tm, const FacePatchMap& face_patch_map, const UVMap& uv_map, std::size_t p,
+                     typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h)
+{
+  const auto o = opposite(h, tm);
+  if(is_border(o, tm) || static_cast<std::size_t>(get(face_patch_map, face(o, tm))) != p)
+    return true;
+  const Packing_point h_source = to_packing_point(get(uv_map, prev(h, tm)));
+  const Packing_point h_target = to_packing_point(get(uv_map, h));
+  const Packing_point o_source = to_packing_point(get(uv_map, prev(o, tm)));
+  const Packing_point o_target = to_packing_point(get(uv_map, o));
+  return !(h_source.x == o_target.x && h_source.y == o_target.y && h_target.x == o_source.x &&
+           h_target.y == o_source.y);
+}
 
 template <typename TriangleMesh, typename FacePatchMap, typename UVMap, typename NamedParameters>
 void collect_charts(const TriangleMesh& tm, const FacePatchMap& face_patch_map, const UVMap& uv_map,
@@ -201,6 +224,7 @@ void collect_charts(const TriangleMesh& tm, const FacePatchMap& face_patch_map, 
   charts.uv_area.assign(number_of_patches, 0.);
   charts.surface_area.assign(number_of_patches, 0.);
   charts.corners.resize(3 * number_of_faces);
+  charts.border_edges.resize(number_of_faces);
   charts.origin.assign(number_of_patches, Packing_point());
   std::vector<std::size_t> cursor(charts.first_face.begin(), charts.first_face.end() - 1);
   const auto coordinates_of = make_coordinates_reader(tm, np);
@@ -237,6 +261,10 @@ void collect_charts(const TriangleMesh& tm, const FacePatchMap& face_patch_map, 
       throw Input_error("pack_patches: face #" + std::to_string(i) + " is not a triangle");
     if(cursor[p] == charts.first_face[p])
       charts.origin[p] = to_packing_point(get(uv_map, h0));
+    charts.border_edges[cursor[p]] = static_cast<unsigned char>(
+      (on_chart_border(tm, face_patch_map, uv_map, p, h1) ? 1u : 0u) |
+      (on_chart_border(tm, face_patch_map, uv_map, p, h2) ? 2u : 0u) |
+      (on_chart_border(tm, face_patch_map, uv_map, p, h0) ? 4u : 0u));
     Packing_point* corner = &charts.corners[3 * cursor[p]++];
     corner[0] = relative_to(to_packing_point(get(uv_map, h0)), charts.origin[p]);
     corner[1] = relative_to(to_packing_point(get(uv_map, h1)), charts.origin[p]);
@@ -315,47 +343,10 @@ void frame_charts(Packing_method method, Chart_set<TriangleMesh>& charts)
     charts.box[p] = b;
   }
   if(method != Packing_method::TIGHT)
-    std::vector<Packing_point>().swap(charts.corners);
-}
-
-// The triangles of corners [begin, end) (three per triangle) that have an
-// edge on the chart's border: a chart's lowest and highest point over any
-// vertical slab lie on its border, and its border bounds the cells it
-// covers, so the shape packers need only these (about the square root of
-// the chart's triangles). An edge is inside when another triangle has it
-// reversed with the same UVs; UVs that differ between the corners of a
-// vertex only keep more triangles. Returns the index of each kept
-// triangle's first corner and, as bit j, whether its edge from corner j to
-// corner j + 1 is on the border.
-inline std::vector<std::pair<std::size_t, unsigned char>>
-border_triangles(const std::vector<Packing_point>& corners, std::size_t begin, std::size_t end)
-{
-  typedef std::array<double, 4> Edge;  // from (x, y) to (x, y)
-  std::vector<Edge> edges;
-  edges.reserve(end - begin);
-  for(std::size_t k = begin; k + 2 < end; k += 3)
-    for(std::size_t j = 0; j < 3; ++j)
-    {
-      const Packing_point& a = corners[k + j];
-      const Packing_point& b = corners[k + (j + 1) % 3];
-      edges.push_back({{ a.x, a.y, b.x, b.y }});
-    }
-  std::sort(edges.begin(), edges.end());
-  std::vector<std::pair<std::size_t, unsigned char>> kept;
-  for(std::size_t k = begin; k + 2 < end; k += 3)
   {
-    unsigned char border = 0;
-    for(std::size_t j = 0; j < 3; ++j)
-    {
-      const Packing_point& a = corners[k + j];
-      const Packing_point& b = corners[k + (j + 1) % 3];
-      if(!std::binary_search(edges.begin(), edges.end(), Edge{{ b.x, b.y, a.x, a.y }}))
-        border |= static_cast<unsigned char>(1u << j);
-    }
-    if(border != 0)
-      kept.emplace_back(k, border);
+    std::vector<Packing_point>().swap(charts.corners);
+    std::vector<unsigned char>().swap(charts.border_edges);
   }
-  return kept;
 }
 
 // Above this many charts only the raster packer runs, from this multiple
@@ -388,12 +379,17 @@ std::vector<Chart_similarity> shape_layout(const Chart_set<TriangleMesh>& charts
   double total = 0.;
   for(std::size_t p = 0; p < n; ++p)
   {
-    const std::size_t begin = 3 * charts.first_face[p], end = 3 * charts.first_face[p + 1];
-    for(const auto& kept : border_triangles(charts.corners, begin, end))
+    // Only the triangles with an edge on the border: a chart's lowest and
+    // highest point over any vertical slab lie on its border, and its
+    // border bounds the cells it covers (about the square root of the
+    // chart's triangles).
+    for(std::size_t i = charts.first_face[p]; i < charts.first_face[p + 1]; ++i)
     {
+      if(charts.border_edges[i] == 0)
+        continue;
       for(std::size_t j = 0; j < 3; ++j)
-        framed.push_back(charts.rotation[p](charts.corners[kept.first + j]));
-      border_edges.push_back(kept.second);
+        framed.push_back(charts.rotation[p](charts.corners[3 * i + j]));
+      border_edges.push_back(charts.border_edges[i]);
     }
     first_corner.push_back(framed.size());
     input[p].density = density[p];
