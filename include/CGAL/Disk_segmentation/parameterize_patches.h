@@ -666,12 +666,30 @@ inline std::vector<std::size_t> patch_roots(const Merge_tree& tree, const std::v
 
 namespace internal {
 
-// parameterize_patches() with the merge tree given apart, so that
-// uv_atlas() can pass its own whatever the type of `np`.
+// `tm` as an indexed mesh, with its face and vertex descriptors in index
+// order: built once by uv_atlas() for both the segmentation and the
+// parameterization.
+template <typename TriangleMesh>
+struct Indexed_input
+{
+  Indexed_triangle_mesh mesh;
+  std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> face_handles;
+  std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> vertex_handles;
+
+  template <typename NamedParameters>
+  Indexed_input(const TriangleMesh& tm, const NamedParameters& np)
+  {
+    build_indexed_triangle_mesh(tm, np, mesh, face_handles, &vertex_handles);
+  }
+};
+
+// parameterize_patches() on `tm` already indexed (`input`), with the merge
+// tree given apart, so that uv_atlas() can pass its own whatever the type
+// of `np`.
 template <typename TriangleMesh, typename FacePatchMap, typename UVMap, typename NamedParameters>
-Parameterization_report parameterize_patches_with_tree(const TriangleMesh& tm, FacePatchMap face_patch_map,
-                                                       UVMap uv_map, const NamedParameters& np,
-                                                       const Merge_tree* tree)
+Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, const Indexed_input<TriangleMesh>& input,
+                                                     FacePatchMap face_patch_map, UVMap uv_map,
+                                                     const NamedParameters& np, const Merge_tree* tree)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -686,10 +704,9 @@ Parameterization_report parameterize_patches_with_tree(const TriangleMesh& tm, F
   const unsigned int threads = settings.threads;
   const bool require_disks = settings.require_disks;
 
-  internal::Indexed_triangle_mesh m;
-  std::vector<typename GT::face_descriptor> face_handles;
-  std::vector<typename GT::vertex_descriptor> vertex_handles;
-  internal::build_indexed_triangle_mesh(tm, np, m, face_handles, &vertex_handles);
+  const internal::Indexed_triangle_mesh& m = input.mesh;
+  const auto& face_handles = input.face_handles;
+  const auto& vertex_handles = input.vertex_handles;
 
   const std::vector<std::size_t> ids = internal::read_face_labels(face_handles, face_patch_map);
   const std::size_t number_of_patches = *std::max_element(ids.begin(), ids.end()) + 1;
@@ -1108,7 +1125,8 @@ Parameterization_report parameterize_patches(const TriangleMesh& tm,
 {
   static_assert(internal::Check_patch_map<FacePatchMap>::value, "");
   static_assert(internal::Check_named_parameters<NamedParameters>::value, "");
-  return internal::parameterize_patches_with_tree(tm, face_patch_map, uv_map, np, internal::merge_tree_parameter(np));
+  return internal::parameterize_indexed_patches(tm, internal::Indexed_input<TriangleMesh>(tm, np), face_patch_map,
+                                                uv_map, np, internal::merge_tree_parameter(np));
 }
 
 } // namespace Disk_segmentation

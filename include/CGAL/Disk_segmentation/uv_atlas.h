@@ -124,8 +124,9 @@ void check_uv_atlas_parameters(const NamedParameters& np = parameters::default_v
 /// @throws Input_error on a bad mesh or parameter (see the three functions); the maps are not written then.
 ///
 /// Complexity: the sum of those of `segment_into_disks()`,
-/// `parameterize_patches()` and `pack_patches()`, each of which reads the
-/// mesh again in \f$ O(F + V) \f$ time for `F` faces and `V` vertices; the
+/// `parameterize_patches()` and `pack_patches()`; the mesh is indexed once
+/// for the first two, in \f$ O(F + V) \f$ time for `F` faces and `V`
+/// vertices, and the packing reads its coordinates again. The
 /// parameterization takes most of the time in practice. Memory: the largest
 /// of the three, plus \f$ O(F) \f$ for the patch ids and the merge tree.
 template <typename TriangleMesh, typename UVMap, typename NamedParameters = parameters::Default_named_parameters>
@@ -154,28 +155,30 @@ Atlas_report uv_atlas(const TriangleMesh& tm, UVMap uv_map, const NamedParameter
     tree = &own_tree;
 
   progress("segmentation", 0, 3);
-  {
-    internal::Indexed_triangle_mesh m;
-    std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> face_handles;
-    internal::build_indexed_triangle_mesh(tm, np, m, face_handles);
-    std::vector<internal::Index> labels;
-    const internal::Segmentation_steps steps = internal::segment_indexed(
-      m, face_handles, np, labels, tree, choose_parameter(get_parameter(np, Disk_segmentation::internal_np::smooth_borders), true));
-    internal::write_face_labels(face_handles, labels, face_patch_map);
-    report.number_of_faces = m.number_of_faces();
-    report.number_of_voronoi_cells = steps.voronoi_cells;
-    report.number_of_refined_regions = steps.refined_regions;
-    report.voronoi_seconds = steps.voronoi_seconds;
-    report.refine_seconds = steps.refine_seconds;
-    report.merge_seconds = steps.merge_seconds;
-  }
-  progress("segmentation", 3, 3);
-
   CGAL::Real_timer timer;
-  timer.start();
-  report.parameterization = internal::parameterize_patches_with_tree(tm, face_patch_map, uv_map, np, tree);
-  report.number_of_charts = report.parameterization.charts.size();
-  report.parameterization_seconds = timer.time();
+  {
+    // One indexed mesh for the segmentation and the parameterization.
+    const internal::Indexed_input<TriangleMesh> input(tm, np);
+    {
+      std::vector<internal::Index> labels;
+      const internal::Segmentation_steps steps = internal::segment_indexed(
+        input.mesh, input.face_handles, np, labels, tree,
+        choose_parameter(get_parameter(np, Disk_segmentation::internal_np::smooth_borders), true));
+      internal::write_face_labels(input.face_handles, labels, face_patch_map);
+      report.number_of_faces = input.mesh.number_of_faces();
+      report.number_of_voronoi_cells = steps.voronoi_cells;
+      report.number_of_refined_regions = steps.refined_regions;
+      report.voronoi_seconds = steps.voronoi_seconds;
+      report.refine_seconds = steps.refine_seconds;
+      report.merge_seconds = steps.merge_seconds;
+    }
+    progress("segmentation", 3, 3);
+
+    timer.start();
+    report.parameterization = internal::parameterize_indexed_patches(tm, input, face_patch_map, uv_map, np, tree);
+    report.number_of_charts = report.parameterization.charts.size();
+    report.parameterization_seconds = timer.time();
+  }
 
   progress("packing", 0, 1);
   timer.reset();

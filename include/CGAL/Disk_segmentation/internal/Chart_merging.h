@@ -25,7 +25,7 @@ namespace Disk_segmentation {
 namespace internal {
 
 // A chart kept by the top-down choice: its patch and path in the merge
-// tree order the charts (see parameterize_patches_with_tree()).
+// tree order the charts (see parameterize_indexed_patches()).
 struct Kept_chart
 {
   std::size_t patch;
