@@ -55,7 +55,8 @@ public:
   explicit Border_router(const Indexed_triangle_mesh& m)
     : m_(m), vertex_faces_(m), distance_(m.number_of_vertices(), 0.), length_(m.number_of_vertices(), 0.),
       previous_(m.number_of_vertices(), no_index), vertex_stamp_(m.number_of_vertices(), 0),
-      band_stamp_(m.number_of_vertices(), 0), face_stamp_(m.number_of_faces(), 0), side_(m.number_of_faces(), 0)
+      band_stamp_(m.number_of_vertices(), 0), face_stamp_(m.number_of_faces(), 0),
+      edge_mark_stamp_(m.number_of_faces(), 0), edge_marks_(m.number_of_faces(), 0), side_(m.number_of_faces(), 0)
   {}
 
   static constexpr std::size_t smallest_region = 3;
@@ -159,12 +160,11 @@ public:
     // Faces of the two regions on each side of the new path: reached from
     // the union's border without crossing the new path or any other edge
     // between a and b (the old arc's edges may be crossed).
-    std::unordered_set<std::uint64_t> barrier, old_edges;
-    for(std::size_t i = 0; i + 1 < path.size(); ++i)
-      barrier.insert(edge_key(path[i], path[i + 1]));
-    for(std::size_t i = 0; i + 1 < arc.vertices.size(); ++i)
-      old_edges.insert(edge_key(arc.vertices[i], arc.vertices[i + 1]));
     const std::uint32_t stamp = next_face_stamp();
+    for(std::size_t i = 0; i + 1 < path.size(); ++i)
+      mark_edge(path[i], path[i + 1], barrier_edge, stamp);
+    for(std::size_t i = 0; i + 1 < arc.vertices.size(); ++i)
+      mark_edge(arc.vertices[i], arc.vertices[i + 1], old_arc_edge, stamp);
     std::vector<Index> queue, faces_ab;
     auto in_union = [&](Index g) { return g != no_index && (labels[g] == a || labels[g] == b); };
     for(Index f : region_faces(labels, a, b))
@@ -188,8 +188,7 @@ public:
         const Index g = m_.neighbors[f][e];
         if(!in_union(g))
           continue;
-        const std::uint64_t key = edge_key(m_.corners[f][e], m_.corners[f][(e + 1) % 3]);
-        if(barrier.count(key) != 0 || (labels[f] != labels[g] && old_edges.count(key) == 0))
+        if(has_mark(f, e, barrier_edge, stamp) || (labels[f] != labels[g] && !has_mark(f, e, old_arc_edge, stamp)))
           continue;
         if(face_stamp_[g] == stamp)
         {
@@ -243,6 +242,34 @@ public:
   }
 
 private:
+  // Edges of the new path and of the old arc, marked on their faces for the
+  // flood fill (bit e, or e + 3, of a face for its edge e).
+  static constexpr int barrier_edge = 0, old_arc_edge = 3;
+
+  void mark_edge(Index u, Index w, int kind, std::uint32_t stamp)
+  {
+    const std::uint64_t key = edge_key(u, w);
+    for(Index k = vertex_faces_.begin[u]; k < vertex_faces_.begin[u + 1]; ++k)
+    {
+      const Index f = vertex_faces_.faces[k];
+      for(int e = 0; e < 3; ++e)
+        if(edge_key(m_.corners[f][e], m_.corners[f][(e + 1) % 3]) == key)
+        {
+          if(edge_mark_stamp_[f] != stamp)
+          {
+            edge_mark_stamp_[f] = stamp;
+            edge_marks_[f] = 0;
+          }
+          edge_marks_[f] = static_cast<unsigned char>(edge_marks_[f] | (1u << (kind + e)));
+        }
+    }
+  }
+
+  bool has_mark(Index f, int e, int kind, std::uint32_t stamp) const
+  {
+    return edge_mark_stamp_[f] == stamp && (edge_marks_[f] >> (kind + e) & 1u) != 0;
+  }
+
   static std::uint64_t edge_key(Index u, Index w)
   {
     return u < w ? (std::uint64_t(u) << 32 | w) : (std::uint64_t(w) << 32 | u);
@@ -509,6 +536,7 @@ private:
     if(++face_clock_ == 0)
     {
       std::fill(face_stamp_.begin(), face_stamp_.end(), 0);
+      std::fill(edge_mark_stamp_.begin(), edge_mark_stamp_.end(), 0);
       face_clock_ = 1;
     }
     return face_clock_;
@@ -518,7 +546,8 @@ private:
   Vertex_faces vertex_faces_;
   std::vector<double> distance_, length_;
   std::vector<Index> previous_;
-  std::vector<std::uint32_t> vertex_stamp_, band_stamp_, face_stamp_;
+  std::vector<std::uint32_t> vertex_stamp_, band_stamp_, face_stamp_, edge_mark_stamp_;
+  std::vector<unsigned char> edge_marks_;
   std::uint32_t vertex_clock_ = 0, band_clock_ = 0, face_clock_ = 0;
   std::vector<unsigned char> side_;
   std::vector<std::vector<Index> > members_;

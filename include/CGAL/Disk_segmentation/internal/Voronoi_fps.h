@@ -78,7 +78,28 @@ public:
       make_seed(seeds[s], static_cast<Index>(s));
     relax_from(seeds, false);
 
-    if(seeds.size() < target)
+    if(seeds.size() + 1 == target)
+    {
+      // The last seed (the second one of a split, mostly): one scan finds
+      // the farthest face, with the heap's order, and the heap is not built.
+      Index s = no_index;
+      std::pair<double, Index> best;
+      for(Index f : region)
+        if(is_seed_[f] != stamp_)
+        {
+          const std::pair<double, Index> key(farthest_key(f, distance_[f]), reversed(f));
+          if(s == no_index || best < key)
+          {
+            best = key;
+            s = f;
+          }
+        }
+      CGAL_assertion(s != no_index);
+      make_seed(s, static_cast<Index>(seeds.size()));
+      seeds.push_back(s);
+      relax_from(std::vector<Index>(1, s), false);
+    }
+    else if(seeds.size() < target)
     {
       farthest_.clear();
       for(Index f : region)
@@ -86,7 +107,8 @@ public:
           farthest_.push_back(std::make_pair(farthest_key(f, distance_[f]), reversed(f)));
       std::make_heap(farthest_.begin(), farthest_.end());
 
-      // One seed per pass, so target - seeds.size() <= |region| passes.
+      // One seed per pass, so target - seeds.size() <= |region| passes. The
+      // last seed's improvements need not enter the heap.
       while(seeds.size() < target)
       {
         const Index s = pop_farthest(region);
@@ -94,7 +116,7 @@ public:
         make_seed(s, static_cast<Index>(seeds.size()));
         seeds.push_back(s);
         const std::vector<Index> source(1, s);
-        relax_from(source, true);
+        relax_from(source, seeds.size() < target);
       }
     }
     return seeds;
