@@ -23,8 +23,9 @@ enum class Parameterization_method
   LSCM,
   /// As-rigid-as-possible (Liu et al.\ 2008), free border: from the
   /// free-border LSCM map (from the mean value map, or Tutte's, when that
-  /// fails), up to ten local/global iterations with a cotangent Laplacian
-  /// factored once, each kept only if the chart stays valid.
+  /// fails), ten local/global iterations with a cotangent Laplacian
+  /// factored once; if the last iterate is not a valid chart, they are run
+  /// again keeping each only if the chart stays valid.
   ARAP,
   /// Mean value coordinates, border fixed on a circle: injective by construction.
   MEAN_VALUE,

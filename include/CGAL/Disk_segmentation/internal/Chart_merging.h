@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <iterator>
 #include <map>
 #include <set>
 #include <tuple>
@@ -81,14 +82,12 @@ std::size_t merge_kept_charts(const Indexed_triangle_mesh& m, Region_topology& t
   std::vector<double> area(n, 0), excess(n, 0);
   std::vector<std::size_t> version(n, 0);
   for(std::size_t i = 0; i < n; ++i)
-  {
     for(Index f : kept[i].chart.faces)
     {
       label[f] = static_cast<Index>(i);
       area[i] += m.area(f);
     }
-    excess[i] = rule.excess(kept[i].chart);
-  }
+  for_each(n, [&](std::size_t i) { excess[i] = rule.excess(kept[i].chart); });
   std::vector<std::map<std::size_t, double> > shared(n);
   for(Index f = 0; f < m.number_of_faces(); ++f)
     for(int e = 0; e < 3; ++e)
@@ -134,9 +133,19 @@ std::size_t merge_kept_charts(const Indexed_triangle_mesh& m, Region_topology& t
       if(busy[a] || busy[b])
         continue;
       tried.insert(Tried(a, version[a], b, version[b]));
-      std::vector<Index> faces = kept[a].chart.faces;
-      faces.insert(faces.end(), kept[b].chart.faces.begin(), kept[b].chart.faces.end());
-      std::sort(faces.begin(), faces.end());
+      const std::vector<Index>& fa = kept[a].chart.faces;
+      const std::vector<Index>& fb = kept[b].chart.faces;
+      std::vector<Index> faces;
+      faces.reserve(fa.size() + fb.size());
+      // Charts mostly list their faces sorted: then a linear merge.
+      if(std::is_sorted(fa.begin(), fa.end()) && std::is_sorted(fb.begin(), fb.end()))
+        std::merge(fa.begin(), fa.end(), fb.begin(), fb.end(), std::back_inserter(faces));
+      else
+      {
+        faces = fa;
+        faces.insert(faces.end(), fb.begin(), fb.end());
+        std::sort(faces.begin(), faces.end());
+      }
       if(rejected_regions.count(region_key(faces)) != 0 || !topology.is_disk(faces))
         continue;
       busy[a] = busy[b] = 1;
@@ -149,6 +158,7 @@ std::size_t merge_kept_charts(const Indexed_triangle_mesh& m, Region_topology& t
     std::vector<Chart> unions(round.size());
     std::vector<Chart_outcome> outcomes(round.size());
     std::vector<char> accepted(round.size(), 0);
+    std::vector<double> union_excess(round.size(), 0.);
     for_each(round.size(), [&](std::size_t i) {
       unions[i] = make_chart(m, round_faces[i]);
       // ARAP from the two maps glued rather than from LSCM: half the time
@@ -157,6 +167,8 @@ std::size_t merge_kept_charts(const Indexed_triangle_mesh& m, Region_topology& t
       outcomes[i] = parameterize_chart_from(m, unions[i], method, use_fallback, start.empty() ? nullptr : &start,
                                             rule.on_invalid_map());
       accepted[i] = rule(unions[i], outcomes[i]) ? 0 : 1;
+      if(accepted[i])
+        union_excess[i] = rule.excess(unions[i]);
     });
 
     for(std::size_t i = 0; i < round.size(); ++i)
@@ -179,7 +191,7 @@ std::size_t merge_kept_charts(const Indexed_triangle_mesh& m, Region_topology& t
       for(Index f : gone.chart.faces)
         label[f] = static_cast<Index>(a);
       area[a] += area[b];
-      excess[a] = rule.excess(keep.chart);
+      excess[a] = union_excess[i];
       shared[a].erase(b);
       for(const auto& entry : shared[b])
       {

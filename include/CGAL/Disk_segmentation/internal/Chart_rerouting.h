@@ -51,10 +51,11 @@ constexpr double largest_reroute_load = 0.9;
 // returns the changes made. The router's per-vertex and per-face arrays are
 // freed on return, before the charts are solved again, where the memory
 // peaks.
-template <typename Rule>
+template <typename Rule, typename ForEach>
 std::vector<Arc_change> reroute_arcs(const Indexed_triangle_mesh& m, Region_topology& topology,
                                      const std::vector<Kept_chart>& kept, const Rule& rule,
-                                     std::vector<Index>& labels, std::vector<std::size_t>& size)
+                                     std::vector<Index>& labels, std::vector<std::size_t>& size,
+                                     const ForEach& for_each)
 {
   const std::size_t n = kept.size();
   Border_router router(m);
@@ -62,8 +63,7 @@ std::vector<Arc_change> reroute_arcs(const Indexed_triangle_mesh& m, Region_topo
   std::vector<char> locked(m.number_of_faces(), 0);
   std::vector<Arc_change> changes;
   std::vector<double> load(n, 0.);
-  for(std::size_t i = 0; i < n; ++i)
-    load[i] = bound_load(chart_distortion(m, kept[i].chart), rule.bound);
+  for_each(n, [&](std::size_t i) { load[i] = bound_load(chart_distortion(m, kept[i].chart), rule.bound); });
   for(const Border_arc& arc : router.arcs(labels))
   {
     if(load[arc.a] > largest_reroute_load || load[arc.b] > largest_reroute_load)
@@ -111,7 +111,7 @@ std::size_t reroute_kept_charts(const Indexed_triangle_mesh& m, Region_topology&
       labels[f] = static_cast<Index>(i);
     size[i] = kept[i].chart.faces.size();
   }
-  std::vector<Arc_change> changes = reroute_arcs(m, topology, kept, rule, labels, size);
+  std::vector<Arc_change> changes = reroute_arcs(m, topology, kept, rule, labels, size, for_each);
   if(changes.empty())
     return 0;
 
