@@ -376,7 +376,8 @@ void split_and_parameterize(const Indexed_triangle_mesh& m, Splitter& splitter, 
         continue;
       }
       outcome = parameterize_chart(m, c, requested, use_fallback, needs_split.on_invalid_map());
-      if(task.faces.size() == 1 || !needs_split(c, outcome))
+      double excess = 0.;
+      if(task.faces.size() == 1 || !needs_split(c, outcome, excess))
       {
         pieces.push_back(std::move(c));
         outcomes.push_back(outcome);
@@ -389,7 +390,7 @@ void split_and_parameterize(const Indexed_triangle_mesh& m, Splitter& splitter, 
       }
       if(outcome.valid)
       {
-        const double density = needs_split.excess_density(c, area);
+        const double density = needs_split.excess_density(excess, area);
         stack.push_back(Task{ std::move(task.faces), density, true,
                               std::make_shared<const std::pair<Chart, Chart_outcome> >(std::move(c), outcome) });
       }
@@ -495,34 +496,48 @@ struct Split_rule
 
   bool operator()(const Chart& c, const Chart_outcome& outcome) const
   {
+    double measured;
+    return (*this)(c, outcome, measured);
+  }
+
+  // The same, measuring the chart once: `measured_excess` gets its
+  // excess() when it was measured (a valid chart under a bound), else 0.
+  bool operator()(const Chart& c, const Chart_outcome& outcome, double& measured_excess) const
+  {
+    measured_excess = 0.;
     if(!use_fallback)
       return false;
     if(!outcome.valid)
       return true;
-    return !bound.is_unbounded() && !chart_distortion(m, c).meets(bound);
+    if(bound.is_unbounded())
+      return false;
+    const Chart_distortion d = chart_distortion(m, c);
+    measured_excess = excess(d);
+    return !d.meets(bound);
   }
 
   // How far a chart is over the bounds on the means, per unit of 3D area
-  // (0 when it is within them). Distortion grows about linearly with the
-  // area of a chart on a smooth surface, so a piece of a rejected chart is
-  // predicted to have this density times its own area.
-  double excess_density(const Chart& c, double area) const
+  // (0 when it is within them), from its excess() and 3D area. Distortion
+  // grows about linearly with the area of a chart on a smooth surface, so
+  // a piece of a rejected chart is predicted to have this density times
+  // its own area.
+  static double excess_density(double excess, double area)
   {
     if(!(area > 0))
       return 0;
-    const double e = excess(c);
-    return e > 1 ? e / area : 0.;
+    return excess > 1 ? excess / area : 0.;
   }
 
   // The larger of a chart's two mean distortions over their bounds (0 for
   // an infinite bound; above 1: over the bound).
-  double excess(const Chart& c) const
+  double excess(const Chart_distortion& d) const
   {
-    const Chart_distortion d = chart_distortion(m, c);
     const double e = (std::max)(std::isfinite(bound.max_angle_distortion) ? d.angle / bound.max_angle_distortion : 0.,
                                 std::isfinite(bound.max_area_distortion) ? d.area / bound.max_area_distortion : 0.);
     return std::isfinite(e) ? e : std::numeric_limits<double>::infinity();
   }
+
+  double excess(const Chart& c) const { return excess(chart_distortion(m, c)); }
 
   // Whether a region is not worth parameterizing: its predicted excess is
   // so far over the bound that it is split at once. Only a prediction: it
@@ -788,10 +803,11 @@ Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, con
         return;
       }
       outcomes[i] = internal::parameterize_chart(m, charts[i], method, use_fallback, needs_split.on_invalid_map());
-      accepted[i] = (faces[i].size() == 1 || !needs_split(charts[i], outcomes[i])) ? 1 : 0;
+      double excess = 0.;
+      accepted[i] = (faces[i].size() == 1 || !needs_split(charts[i], outcomes[i], excess)) ? 1 : 0;
       if(!accepted[i] && outcomes[i].valid)
       {
-        wave[i].excess_density = needs_split.excess_density(charts[i], area);
+        wave[i].excess_density = needs_split.excess_density(excess, area);
         wave[i].parent = std::make_shared<const std::pair<internal::Chart, internal::Chart_outcome> >(
           std::move(charts[i]), outcomes[i]);
       }

@@ -166,9 +166,7 @@ std::size_t merge_kept_charts(const Indexed_triangle_mesh& m, Region_topology& t
       const Chart_uv start = glue_chart_maps(kept[round[i].first].chart, kept[round[i].second].chart, unions[i]);
       outcomes[i] = parameterize_chart_from(m, unions[i], method, use_fallback, start.empty() ? nullptr : &start,
                                             rule.on_invalid_map());
-      accepted[i] = rule(unions[i], outcomes[i]) ? 0 : 1;
-      if(accepted[i])
-        union_excess[i] = rule.excess(unions[i]);
+      accepted[i] = rule(unions[i], outcomes[i], union_excess[i]) ? 0 : 1;
     });
 
     for(std::size_t i = 0; i < round.size(); ++i)
