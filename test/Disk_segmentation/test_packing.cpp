@@ -594,6 +594,33 @@ TEST(Packing, DefaultIsTightAndDeterministic)
       ASSERT_EQ(a.uv[h], b.uv[h]);
 }
 
+TEST(Packing, SameLayoutForAnyNumberOfThreads)
+{
+  // Few charts (the profile and raster searches side by side) and many
+  // (the raster search alone, each chart's turns side by side).
+  std::vector<int> cuts;
+  for(int x = 0; x <= 12; ++x) cuts.push_back(x);
+  cuts.push_back(17);
+  cuts.push_back(25);
+  Case cases[] = { sphere_case(), torus_case(), c_and_square_case(true), grid_case(cuts, cuts) };
+  for(Case& c : cases)
+  {
+    SCOPED_TRACE(std::to_string(c.number_of_patches) + " charts");
+    const std::vector<Point_2> before = snapshot(c);
+    std::vector<std::vector<Point_2>> layouts;
+    for(unsigned int threads : { 1u, 2u, 4u, 0u })
+    {
+      for(face_descriptor f : faces(c.mesh))
+        for(halfedge_descriptor h : CGAL::halfedges_around_face(c.mesh.halfedge(f), c.mesh))
+          c.uv[h] = before[h.idx()];
+      DS::pack_patches(c.mesh, c.patch, c.uv, DS::parameters::number_of_threads(threads));
+      layouts.push_back(snapshot(c));
+    }
+    for(std::size_t k = 1; k < layouts.size(); ++k)
+      EXPECT_TRUE(layouts[k] == layouts[0]) << "layout " << k << " differs from the sequential one";
+  }
+}
+
 TEST(Packing, PolyhedronGivesTheSameAtlas)
 {
   for(DS::Packing_method method : { DS::Packing_method::TIGHT, DS::Packing_method::GRID })

@@ -12,6 +12,7 @@
 #include <CGAL/Disk_segmentation/internal/Parameter_checks.h>
 #include <CGAL/Disk_segmentation/internal/Profile_packer.h>
 #include <CGAL/Disk_segmentation/internal/Raster_packer.h>
+#include <CGAL/Disk_segmentation/internal/for_each_index.h>
 #include <CGAL/Disk_segmentation/internal/Indexed_triangle_mesh.h>
 #include <CGAL/Disk_segmentation/internal/packing_geometry.h>
 
@@ -71,6 +72,7 @@ struct Packing_settings
   Packing_method method;
   double resolution;
   double padding;  // in texels
+  unsigned int threads;  // 0: TBB's choice
 };
 
 template <typename NamedParameters>
@@ -99,6 +101,10 @@ Packing_settings packing_settings(const NamedParameters& np)
   if(!(2. * s.padding < s.resolution))
     throw Input_error("pack_patches: padding_in_texels leaves no room: twice the padding must be "
                       "less than texture_resolution");
+  s.threads = static_cast<unsigned int>((std::min)(
+    count_parameter(choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_threads), 0u),
+                    "number_of_threads"),
+    std::size_t((std::numeric_limits<unsigned int>::max)())));
   return s;
 }
 
@@ -349,12 +355,12 @@ void frame_charts(Packing_method method, Chart_set<TriangleMesh>& charts)
   }
 }
 
-// Above this many charts only the raster packer runs, from this multiple
-// of the rectangles' scale (see shape_layout()).
+// Above this many charts only the raster packer runs; its search starts at
+// this multiple of the rectangles' scale (see shape_layout()).
 constexpr std::size_t profile_packer_max_charts = 64;
 constexpr double raster_start_over_rectangles = 1.2;
 
-// The better of the two shape packers' layouts (profile, then raster) at
+// The better of the two shape packers' layouts (profile, else raster) at
 // the largest scale each reaches, if that is above `rectangle_scale` (the
 // rectangle packing's); else an empty vector.
 template <typename TriangleMesh>
@@ -402,56 +408,45 @@ std::vector<Chart_similarity> shape_layout(const Chart_set<TriangleMesh>& charts
     input[p].border_edges = border_edges.data() + first_corner[p] / 3;
     input[p].number_of_corners = first_corner[p + 1] - first_corner[p];
   }
-  // The largest scale in [lo, hi) at which `packer` fits every chart, to
-  // 1 percent (about seven trials), and its placements; 0 if it does not
-  // fit them at lo. Measured on 90 atlases (30 meshes, 3 bounds): the same
-  // UV area as to 0.2 percent on the mean, 10 % less packing time; the
-  // raster packer, which starts from this scale, wins on most meshes.
-  std::vector<Profile_placement> placement;
-  auto largest_scale = [&](auto& packer, double lo, double hi, std::vector<Profile_placement>& best) {
-    if(!(hi > lo) || !packer.run(input, lo, placement))
+  const double hi = total > 0. ? 1. / std::sqrt(total) : rectangle_scale;
+
+  // The profile packer's largest scale in [rectangle_scale, hi) at which
+  // every chart fits, to 1 percent (about seven trials), and its
+  // placements; 0 if it does not fit them at rectangle_scale. Measured on
+  // 90 atlases (30 meshes, 3 bounds): the same UV area as to 0.2 percent on
+  // the mean, 10 % less packing time.
+  auto profile_search = [&](std::vector<Profile_placement>& best) {
+    Profile_packer packer(columns, pad_cells);
+    std::vector<Profile_placement> placement;
+    double lo = rectangle_scale, top = hi;
+    if(!(top > lo) || !packer.run(input, lo, placement))
       return 0.;
-    best = placement;
-    while(hi - lo > 1e-2 * lo)
+    best.swap(placement);
+    while(top - lo > 1e-2 * lo)
     {
-      const double mid = 0.5 * (lo + hi);
+      const double mid = 0.5 * (lo + top);
       if(packer.run(input, mid, placement))
       {
         lo = mid;
         best.swap(placement);
       }
       else
-        hi = mid;
+        top = mid;
     }
     return lo;
   };
-  const double hi = total > 0. ? 1. / std::sqrt(total) : rectangle_scale;
-  std::vector<Profile_placement> best, raster_best;
-  double lo = 0.;
-  // With many charts the raster packer alone packs as much (30 meshes,
-  // above 64 charts: -0.019 to +0.008 of the square, median +0.001) in
-  // 0.4-0.7 of the time (ChineseDragon-10kv 256 charts, b9_mesh 455,
-  // cheese 922); with few, the profile packer's layout or scale often wins
-  // (anchor +0.135, head +0.090).
-  if(n <= profile_packer_max_charts)
-  {
-    Profile_packer packer(columns, pad_cells);
-    lo = largest_scale(packer, rectangle_scale, hi, best);
-  }
-  {
-    // The rows a raster packing uses grow about as the square of the scale:
-    // each trial aims at the scale that would just fill the square, then
-    // bisection between the best fit and the smallest failure, to 1 percent
-    // (4 to 6 trials on 10 meshes of CGAL's data). It starts from the
-    // profile packer's scale and gives up if it cannot reach it. Without
-    // the profile packer (many charts), it starts 20 % above the
-    // rectangles' scale, about where it ends, and a failure only aims
-    // lower.
+
+  // The rows a raster packing uses grow about as the square of the scale:
+  // each trial aims at the scale that would just fill the square, then
+  // bisection between the best fit and the smallest failure, to 1 percent
+  // (two to six trials on 30 meshes). It starts 20 % above the rectangles'
+  // scale, about where it ends.
+  auto raster_search = [&](std::vector<Profile_placement>& best) {
     Raster_packer packer(columns, pad_cells);
-    const bool after_profile = lo > 0.;
-    double fit = 0., fail = hi, scale = (std::max)(lo, rectangle_scale);
-    if(!after_profile)
-      scale = (std::min)(hi, raster_start_over_rectangles * rectangle_scale);
+    packer.set_parallel(s.threads != 1);
+    std::vector<Profile_placement> placement;
+    double fit = 0., fail = hi;
+    double scale = (std::min)(hi, raster_start_over_rectangles * rectangle_scale);
     const double target = double(columns);
     const double tol = 0.01;
     const int max_trials = 6;
@@ -462,10 +457,8 @@ std::vector<Chart_similarity> shape_layout(const Chart_set<TriangleMesh>& charts
       if(packed)
       {
         fit = scale;
-        raster_best.swap(placement);
+        best.swap(placement);
       }
-      else if(fit == 0. && after_profile)
-        break;
       else
         fail = (std::min)(fail, scale);
       double next = used > 0. ? scale * std::sqrt(target / used) : 0.;
@@ -478,12 +471,27 @@ std::vector<Chart_similarity> shape_layout(const Chart_set<TriangleMesh>& charts
         next = 0.5 * ((fit > 0. ? fit : rectangle_scale) + fail);
       scale = next;
     }
-    if(fit > lo)
-    {
-      lo = fit;
-      best.swap(raster_best);
-    }
-  }
+    return fit;
+  };
+
+  // The two searches are independent, so they run side by side. With many
+  // charts the raster packer alone packs as much (30 meshes, above 64
+  // charts: -0.019 to +0.008 of the square, median +0.001) in 0.4-0.7 of
+  // the time (ChineseDragon-10kv 256 charts, b9_mesh 455, cheese 922); with
+  // few, the profile packer's layout or scale often wins (anchor +0.135,
+  // head +0.090). Before, the raster search started from the profile
+  // packer's scale: on 30 atlases the same median UV area, in 0.88 of the
+  // time with one thread.
+  std::vector<Profile_placement> found[2];
+  double reached[2] = { 0., 0. };
+  const bool with_profile = n <= profile_packer_max_charts;
+  for_each_index(with_profile ? 2 : 1, s.threads, [&](std::size_t k) {
+    reached[k] = k == 0 ? raster_search(found[0]) : profile_search(found[1]);
+  });
+  // On a tie, the profile packer's layout.
+  const std::size_t winner = reached[1] >= reached[0] ? 1 : 0;
+  const double lo = reached[winner];
+  const std::vector<Profile_placement>& best = found[winner];
   if(!(lo > rectangle_scale * (1. + 1e-3)))
     return std::vector<Chart_similarity>();
   global_scale = lo;
@@ -644,9 +652,13 @@ std::vector<Chart_similarity> grid_layout(const Chart_set<TriangleMesh>& charts,
 /// no cell already taken, so that small charts fill the holes under and
 /// inside large ones and long charts may lie along a diagonal; each trial
 /// aims at the scale at which the rows used would just fill the square, to
-/// 1 percent, in at most six trials. The best of the three layouts
-/// (rectangles, profile, raster) is kept. Padding is rounded up to whole
-/// cells.
+/// 1 percent, in at most six trials, starting 20 % above the rectangles'
+/// scale. The best of the three layouts (rectangles, profile, raster) is
+/// kept; on a tie, the earlier one. Padding is rounded up to whole cells.
+/// With TBB and `number_of_threads` other than 1, the profile and raster
+/// searches run side by side and the eight orientations of a chart are
+/// rasterized and searched side by side; the layout is the same for any
+/// number of threads.
 ///
 /// With `Packing_method::GRID` (the paper's packer), chart `i` goes to cell
 /// `i` of a `ceil(sqrt(P)) x ceil(sqrt(P))` grid of equal square cells, row by
@@ -705,6 +717,11 @@ std::vector<Chart_similarity> grid_layout(const Chart_set<TriangleMesh>& charts,
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{`2`}
 ///     \cgalParamExtra{must be finite, >= 0 and less than half of `texture_resolution`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_threads}
+///     \cgalParamDescription{maximum number of threads of the `TIGHT` packing (0: TBB's choice; 1: sequential). Without TBB, sequential.}
+///     \cgalParamType{`unsigned int`}
+///     \cgalParamDefault{`0`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_point_map}
 ///     \cgalParamDescription{a property map associating points to the vertices of `tm` (3D areas of `TIGHT`)}

@@ -20,6 +20,7 @@
 #include <CGAL/Disk_segmentation/internal/Chart_parameterization.h>
 #include <CGAL/Disk_segmentation/internal/Chart_restriction.h>
 #include <CGAL/Disk_segmentation/internal/Face_partition.h>
+#include <CGAL/Disk_segmentation/internal/for_each_index.h>
 #include <CGAL/Disk_segmentation/internal/Indexed_triangle_mesh.h>
 #include <CGAL/Disk_segmentation/internal/Parameter_checks.h>
 #include <CGAL/Disk_segmentation/internal/Progress.h>
@@ -33,10 +34,7 @@
 #include <boost/property_map/property_map.hpp>
 
 #ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 #endif
 
 #include <algorithm>
@@ -184,30 +182,6 @@ Parameterization_settings parameterization_settings(const NamedParameters& np)
   if(s.max_chart_faces < 1)
     throw Input_error("max_chart_faces must be >= 1");
   return s;
-}
-
-// Runs `work(i)` for i in [0, n), on up to `threads` threads (0: TBB's
-// choice). Each call must touch only its own data.
-template <typename Work>
-void for_each_index(std::size_t n, unsigned int threads, const Work& work)
-{
-#ifdef CGAL_LINKED_WITH_TBB
-  if(threads != 1)
-  {
-    tbb::task_arena arena(threads == 0 ? tbb::task_arena::automatic : static_cast<int>(threads));
-    arena.execute([&] {
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1), [&](const tbb::blocked_range<std::size_t>& r) {
-        for(std::size_t i = r.begin(); i != r.end(); ++i)
-          work(i);
-      });
-    });
-    return;
-  }
-#else
-  CGAL_USE(threads);
-#endif
-  for(std::size_t i = 0; i < n; ++i)
-    work(i);
 }
 
 inline double region_area(const Indexed_triangle_mesh& m, const std::vector<Index>& faces)

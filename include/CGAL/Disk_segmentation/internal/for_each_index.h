@@ -1,0 +1,54 @@
+// Copyright (c) 2026 The Disk_segmentation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_DISK_SEGMENTATION_INTERNAL_FOR_EACH_INDEX_H
+#define CGAL_DISK_SEGMENTATION_INTERNAL_FOR_EACH_INDEX_H
+
+#include <CGAL/use.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/info.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+#endif
+
+#include <cstddef>
+
+namespace CGAL {
+namespace Disk_segmentation {
+namespace internal {
+
+// Runs `work(i)` for i in [0, n), on up to `threads` threads (0: TBB's
+// choice). Each call must touch only its own data.
+template <typename Work>
+void for_each_index(std::size_t n, unsigned int threads, const Work& work)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if(threads != 1)
+  {
+    // More threads than the machine runs would only make TBB warn.
+    const int available = tbb::info::default_concurrency();
+    const int wanted = threads == 0 || threads > static_cast<unsigned int>(available) ? available
+                                                                                      : static_cast<int>(threads);
+    tbb::task_arena arena(wanted);
+    arena.execute([&] {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1), [&](const tbb::blocked_range<std::size_t>& r) {
+        for(std::size_t i = r.begin(); i != r.end(); ++i)
+          work(i);
+      });
+    });
+    return;
+  }
+#else
+  CGAL_USE(threads);
+#endif
+  for(std::size_t i = 0; i < n; ++i)
+    work(i);
+}
+
+} // namespace internal
+} // namespace Disk_segmentation
+} // namespace CGAL
+
+#endif // CGAL_DISK_SEGMENTATION_INTERNAL_FOR_EACH_INDEX_H
