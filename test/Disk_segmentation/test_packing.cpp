@@ -596,8 +596,8 @@ TEST(Packing, DefaultIsTightAndDeterministic)
 
 TEST(Packing, SameLayoutForAnyNumberOfThreads)
 {
-  // Few charts (the profile and raster searches side by side) and many
-  // (the raster search alone, each chart's turns side by side).
+  // Few charts (the profile search, then the raster one) and many (the
+  // raster search alone); each chart's turns are searched side by side.
   std::vector<int> cuts;
   for(int x = 0; x <= 12; ++x) cuts.push_back(x);
   cuts.push_back(17);

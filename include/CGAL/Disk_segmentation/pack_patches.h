@@ -12,7 +12,7 @@
 #include <CGAL/Disk_segmentation/internal/Parameter_checks.h>
 #include <CGAL/Disk_segmentation/internal/Profile_packer.h>
 #include <CGAL/Disk_segmentation/internal/Raster_packer.h>
-#include <CGAL/Disk_segmentation/internal/for_each_index.h>
+#include <CGAL/Disk_segmentation/internal/parallel.h>
 #include <CGAL/Disk_segmentation/internal/Indexed_triangle_mesh.h>
 #include <CGAL/Disk_segmentation/internal/packing_geometry.h>
 
@@ -360,7 +360,7 @@ void frame_charts(Packing_method method, Chart_set<TriangleMesh>& charts)
 constexpr std::size_t profile_packer_max_charts = 64;
 constexpr double raster_start_over_rectangles = 1.2;
 
-// The better of the two shape packers' layouts (profile, else raster) at
+// The better of the two shape packers' layouts (profile, then raster) at
 // the largest scale each reaches, if that is above `rectangle_scale` (the
 // rectangle packing's); else an empty vector.
 template <typename TriangleMesh>
@@ -439,14 +439,18 @@ std::vector<Chart_similarity> shape_layout(const Chart_set<TriangleMesh>& charts
   // The rows a raster packing uses grow about as the square of the scale:
   // each trial aims at the scale that would just fill the square, then
   // bisection between the best fit and the smallest failure, to 1 percent
-  // (two to six trials on 30 meshes). It starts 20 % above the rectangles'
-  // scale, about where it ends.
-  auto raster_search = [&](std::vector<Profile_placement>& best) {
+  // (4 to 6 trials on 10 meshes of CGAL's data). It starts from the
+  // profile packer's scale and gives up if it cannot reach it. Without
+  // the profile packer (many charts), it starts 20 % above the rectangles'
+  // scale, about where it ends, and a failure only aims lower.
+  auto raster_search = [&](double profile_scale, std::vector<Profile_placement>& best) {
     Raster_packer packer(columns, pad_cells);
     packer.set_parallel(s.threads != 1);
     std::vector<Profile_placement> placement;
+    const bool after_profile = profile_scale > 0.;
     double fit = 0., fail = hi;
-    double scale = (std::min)(hi, raster_start_over_rectangles * rectangle_scale);
+    double scale = after_profile ? (std::max)(profile_scale, rectangle_scale)
+                                 : (std::min)(hi, raster_start_over_rectangles * rectangle_scale);
     const double target = double(columns);
     const double tol = 0.01;
     const int max_trials = 6;
@@ -459,6 +463,8 @@ std::vector<Chart_similarity> shape_layout(const Chart_set<TriangleMesh>& charts
         fit = scale;
         best.swap(placement);
       }
+      else if(fit == 0. && after_profile)
+        break;
       else
         fail = (std::min)(fail, scale);
       double next = used > 0. ? scale * std::sqrt(target / used) : 0.;
@@ -474,24 +480,27 @@ std::vector<Chart_similarity> shape_layout(const Chart_set<TriangleMesh>& charts
     return fit;
   };
 
-  // The two searches are independent, so they run side by side. With many
-  // charts the raster packer alone packs as much (30 meshes, above 64
-  // charts: -0.019 to +0.008 of the square, median +0.001) in 0.4-0.7 of
-  // the time (ChineseDragon-10kv 256 charts, b9_mesh 455, cheese 922); with
-  // few, the profile packer's layout or scale often wins (anchor +0.135,
-  // head +0.090). Before, the raster search started from the profile
-  // packer's scale: on 30 atlases the same median UV area, in 0.88 of the
-  // time with one thread.
-  std::vector<Profile_placement> found[2];
-  double reached[2] = { 0., 0. };
-  const bool with_profile = n <= profile_packer_max_charts;
-  for_each_index(with_profile ? 2 : 1, s.threads, [&](std::size_t k) {
-    reached[k] = k == 0 ? raster_search(found[0]) : profile_search(found[1]);
+  // With many charts the raster packer alone packs as much (30 meshes,
+  // above 64 charts: -0.019 to +0.008 of the square, median +0.001) in
+  // 0.4-0.7 of the time (ChineseDragon-10kv 256 charts, b9_mesh 455,
+  // cheese 922); with few, the profile packer's layout or scale often wins
+  // (anchor +0.135, head +0.090). The two searches could run side by side
+  // if the raster one did not start from the profile packer's scale; on 30
+  // atlases that took 1.06 times the packing time with one thread, 0.8
+  // with two, for the same median UV area. Within the raster search, the
+  // turns of each chart run side by side.
+  std::vector<Profile_placement> best, raster_best;
+  double lo = 0.;
+  within_arena(s.threads, [&] {
+    if(n <= profile_packer_max_charts)
+      lo = profile_search(best);
+    const double fit = raster_search(lo, raster_best);
+    if(fit > lo)
+    {
+      lo = fit;
+      best.swap(raster_best);
+    }
   });
-  // On a tie, the profile packer's layout.
-  const std::size_t winner = reached[1] >= reached[0] ? 1 : 0;
-  const double lo = reached[winner];
-  const std::vector<Profile_placement>& best = found[winner];
   if(!(lo > rectangle_scale * (1. + 1e-3)))
     return std::vector<Chart_similarity>();
   global_scale = lo;
@@ -653,10 +662,10 @@ std::vector<Chart_similarity> grid_layout(const Chart_set<TriangleMesh>& charts,
 /// inside large ones and long charts may lie along a diagonal; each trial
 /// aims at the scale at which the rows used would just fill the square, to
 /// 1 percent, in at most six trials, starting 20 % above the rectangles'
-/// scale. The best of the three layouts (rectangles, profile, raster) is
-/// kept; on a tie, the earlier one. Padding is rounded up to whole cells.
-/// With TBB and `number_of_threads` other than 1, the profile and raster
-/// searches run side by side and the eight orientations of a chart are
+/// scale, or from the profile packer's scale if that ran. The best of the three
+/// layouts (rectangles, profile, raster) is kept; on a tie, the earlier
+/// one. Padding is rounded up to whole cells. With TBB and
+/// `number_of_threads` other than 1, the eight orientations of a chart are
 /// rasterized and searched side by side; the layout is the same for any
 /// number of threads.
 ///

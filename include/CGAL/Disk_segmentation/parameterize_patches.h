@@ -20,7 +20,7 @@
 #include <CGAL/Disk_segmentation/internal/Chart_parameterization.h>
 #include <CGAL/Disk_segmentation/internal/Chart_restriction.h>
 #include <CGAL/Disk_segmentation/internal/Face_partition.h>
-#include <CGAL/Disk_segmentation/internal/for_each_index.h>
+#include <CGAL/Disk_segmentation/internal/parallel.h>
 #include <CGAL/Disk_segmentation/internal/Indexed_triangle_mesh.h>
 #include <CGAL/Disk_segmentation/internal/Parameter_checks.h>
 #include <CGAL/Disk_segmentation/internal/Progress.h>

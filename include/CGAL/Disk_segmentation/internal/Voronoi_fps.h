@@ -266,9 +266,11 @@ private:
       component.clear();
       Index farthest = root;
       double farthest_distance = 0.;
+      bool has_first_seed = false;
       relax_from(std::vector<Index>(1, root), false, [&](Index f, double d)
       {
         component.push_back(f);
+        has_first_seed = has_first_seed || f == first_seed;
         if(d > farthest_distance || (d == farthest_distance && f < farthest))
         {
           farthest = f;
@@ -277,8 +279,7 @@ private:
       });
 
       Index seed = farthest;
-      if(first_seed != no_index && member_[first_seed] == stamp_ &&
-         std::find(component.begin(), component.end(), first_seed) != component.end())
+      if(has_first_seed)
         seed = first_seed;
       else if(rng != nullptr)
       {

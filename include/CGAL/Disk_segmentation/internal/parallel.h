@@ -1,8 +1,8 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-#ifndef CGAL_DISK_SEGMENTATION_INTERNAL_FOR_EACH_INDEX_H
-#define CGAL_DISK_SEGMENTATION_INTERNAL_FOR_EACH_INDEX_H
+#ifndef CGAL_DISK_SEGMENTATION_INTERNAL_PARALLEL_H
+#define CGAL_DISK_SEGMENTATION_INTERNAL_PARALLEL_H
 
 #include <CGAL/use.h>
 
@@ -19,10 +19,11 @@ namespace CGAL {
 namespace Disk_segmentation {
 namespace internal {
 
-// Runs `work(i)` for i in [0, n), on up to `threads` threads (0: TBB's
-// choice). Each call must touch only its own data.
+// Runs `work()` on up to `threads` threads (0: TBB's choice): the TBB
+// loops it starts use no more. Without TBB, or with one thread, it runs
+// `work()` as it is.
 template <typename Work>
-void for_each_index(std::size_t n, unsigned int threads, const Work& work)
+void within_arena(unsigned int threads, const Work& work)
 {
 #ifdef CGAL_LINKED_WITH_TBB
   if(threads != 1)
@@ -32,7 +33,24 @@ void for_each_index(std::size_t n, unsigned int threads, const Work& work)
     const int wanted = threads == 0 || threads > static_cast<unsigned int>(available) ? available
                                                                                       : static_cast<int>(threads);
     tbb::task_arena arena(wanted);
-    arena.execute([&] {
+    arena.execute([&] { work(); });
+    return;
+  }
+#else
+  CGAL_USE(threads);
+#endif
+  work();
+}
+
+// Runs `work(i)` for i in [0, n), on up to `threads` threads (0: TBB's
+// choice). Each call must touch only its own data.
+template <typename Work>
+void for_each_index(std::size_t n, unsigned int threads, const Work& work)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if(threads != 1)
+  {
+    within_arena(threads, [&] {
       tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1), [&](const tbb::blocked_range<std::size_t>& r) {
         for(std::size_t i = r.begin(); i != r.end(); ++i)
           work(i);
@@ -40,8 +58,6 @@ void for_each_index(std::size_t n, unsigned int threads, const Work& work)
     });
     return;
   }
-#else
-  CGAL_USE(threads);
 #endif
   for(std::size_t i = 0; i < n; ++i)
     work(i);
@@ -51,4 +67,4 @@ void for_each_index(std::size_t n, unsigned int threads, const Work& work)
 } // namespace Disk_segmentation
 } // namespace CGAL
 
-#endif // CGAL_DISK_SEGMENTATION_INTERNAL_FOR_EACH_INDEX_H
+#endif // CGAL_DISK_SEGMENTATION_INTERNAL_PARALLEL_H
