@@ -319,13 +319,12 @@ void collect_charts(const TriangleMesh& tm, const FacePatchMap& face_patch_map, 
 // all of them, so that it holds the chart whatever rounding did to the hull.
 // Releases the corners unless the tight layout reads them.
 template <typename TriangleMesh>
-void frame_charts(Packing_method method, Chart_set<TriangleMesh>& charts)
+void frame_charts(Packing_method method, unsigned int threads, Chart_set<TriangleMesh>& charts)
 {
   charts.rotation.assign(charts.size(), Packing_rotation());
   charts.box.assign(charts.size(), Packing_box());
-  std::vector<Packing_point> points, hull;
-  for(std::size_t p = 0; p < charts.size(); ++p)
-  {
+  for_each_index(charts.size(), threads, [&](std::size_t p) {
+    std::vector<Packing_point> points, hull;
     const auto begin = charts.corners.begin() + static_cast<std::ptrdiff_t>(3 * charts.first_face[p]);
     const auto end = charts.corners.begin() + static_cast<std::ptrdiff_t>(3 * charts.first_face[p + 1]);
     points.assign(begin, end);
@@ -347,7 +346,7 @@ void frame_charts(Packing_method method, Chart_set<TriangleMesh>& charts)
     }
     charts.rotation[p] = r;
     charts.box[p] = b;
-  }
+  });
   if(method != Packing_method::TIGHT)
   {
     std::vector<Packing_point>().swap(charts.corners);
@@ -417,6 +416,7 @@ std::vector<Chart_similarity> shape_layout(const Chart_set<TriangleMesh>& charts
   // the mean, 10 % less packing time.
   auto profile_search = [&](std::vector<Profile_placement>& best) {
     Profile_packer packer(columns, pad_cells);
+    packer.set_parallel(s.threads != 1);
     std::vector<Profile_placement> placement;
     double lo = rectangle_scale, top = hi;
     if(!(top > lo) || !packer.run(input, lo, placement))
@@ -487,8 +487,8 @@ std::vector<Chart_similarity> shape_layout(const Chart_set<TriangleMesh>& charts
   // (anchor +0.135, head +0.090). The two searches could run side by side
   // if the raster one did not start from the profile packer's scale; on 30
   // atlases that took 1.06 times the packing time with one thread, 0.8
-  // with two, for the same median UV area. Within the raster search, the
-  // turns of each chart run side by side.
+  // with two, for the same median UV area. Within each search, the turns
+  // of each chart run side by side.
   std::vector<Profile_placement> best, raster_best;
   double lo = 0.;
   within_arena(s.threads, [&] {
@@ -665,9 +665,9 @@ std::vector<Chart_similarity> grid_layout(const Chart_set<TriangleMesh>& charts,
 /// scale, or from the profile packer's scale if that ran. The best of the three
 /// layouts (rectangles, profile, raster) is kept; on a tie, the earlier
 /// one. Padding is rounded up to whole cells. With TBB and
-/// `number_of_threads` other than 1, the eight orientations of a chart are
-/// rasterized and searched side by side; the layout is the same for any
-/// number of threads.
+/// `number_of_threads` other than 1, the orientations of a chart are
+/// profiled or rasterized and searched side by side; the layout is the same
+/// for any number of threads.
 ///
 /// With `Packing_method::GRID` (the paper's packer), chart `i` goes to cell
 /// `i` of a `ceil(sqrt(P)) x ceil(sqrt(P))` grid of equal square cells, row by
@@ -775,7 +775,7 @@ Packing_report pack_patches(const TriangleMesh& tm,
   const bool tight = settings.method == Packing_method::TIGHT;
   internal::Chart_set<TriangleMesh> charts;
   internal::collect_charts(tm, face_patch_map, uv_map, tight, np, charts);
-  internal::frame_charts(settings.method, charts);
+  internal::frame_charts(settings.method, settings.threads, charts);
 
   double global_scale = 0.;
   const std::vector<internal::Chart_similarity> placement =

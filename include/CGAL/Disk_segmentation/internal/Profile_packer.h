@@ -14,6 +14,12 @@
 
 #include <CGAL/Disk_segmentation/internal/packing_geometry.h>
 
+#include <CGAL/use.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/parallel_for.h>
+#endif
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -76,42 +82,27 @@ public:
     out.assign(charts.size(), Profile_placement());
     const std::vector<std::size_t> order = largest_first(charts);
     skyline_.assign(n_, 0);
-    const long side = static_cast<long>(n_);
     for(std::size_t i : order)
     {
-      long best_top = std::numeric_limits<long>::max(), best_y = 0, best_x = 0;
-      int best_turns = -1;
+      // Each turn on its own, then the turns in order: the same choice as
+      // one scan over all turns and columns, whatever the threads.
+      bool fits[4];
+      Placement found[4];
+      for_each_turn([&](int turns) {
+        fits[turns] = profile(charts[i], scale, turns, profiles_[turns]);
+        if(fits[turns])
+          found[turns] = lowest_placement(profiles_[turns], turns);
+      });
+      Placement best;
       for(int turns = 0; turns < 4; ++turns)
       {
-        if(!profile(charts[i], scale, turns, profiles_[turns]))
+        if(!fits[turns])
           return false;
-        const Profile& p = profiles_[turns];
-        const long width = static_cast<long>(p.low.size());
-        // Every placement of this turn, each column of the chart checked
-        // against the skyline: at most n columns times its width.
-        for(long x = 0; x + width <= side; ++x)
-        {
-          long y = 0;
-          for(long c = 0; c < width; ++c)
-            y = (std::max)(y, skyline_[x + c] - p.low[c]);
-          const long top = y + p.height;
-          if(top > side)
-            continue;
-          // The cells left empty below the chart, at a small weight: enough
-          // to prefer a dent the chart fits, not to climb for it.
-          long waste = 0;
-          for(long c = 0; c < width; ++c)
-            waste += y + p.low[c] - skyline_[x + c];
-          waste = waste * waste_weight_percent / 100;
-          if(top + waste < best_top || (top + waste == best_top && y < best_y))
-          {
-            best_top = top + waste;
-            best_y = y;
-            best_x = x;
-            best_turns = turns;
-          }
-        }
+        if(found[turns].turns >= 0 && found[turns].better_than(best))
+          best = found[turns];
       }
+      const long best_x = best.x, best_y = best.y;
+      const int best_turns = best.turns;
       if(best_turns < 0)
         return false;
       const Profile& p = profiles_[best_turns];
@@ -125,6 +116,17 @@ public:
     return true;
   }
 
+  // Whether the turns of a chart are profiled and placed on several threads
+  // (with TBB). The layout is the same either way.
+  void set_parallel(bool parallel)
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    parallel_ = parallel;
+#else
+    CGAL_USE(parallel);
+#endif
+  }
+
 private:
   // A chart's footprint: per column, the lowest cell its padding needs free
   // (`low`) and one above the highest cell the chart itself covers (`high`,
@@ -134,7 +136,65 @@ private:
   {
     std::vector<long> low, high;
     long height = 0;
+    std::vector<Packing_point> points;  // scratch, one per turn
   };
+
+  // A chart's place: its score (top plus weighted waste), then its row.
+  struct Placement
+  {
+    long score = (std::numeric_limits<long>::max)(), y = 0, x = 0;
+    int turns = -1;  // -1: none
+
+    // The order of the scan: a later placement wins only if it is better.
+    bool better_than(const Placement& o) const { return score < o.score || (score == o.score && y < o.y); }
+  };
+
+  template <typename Work>
+  void for_each_turn(const Work& work) const
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    if(parallel_)
+    {
+      tbb::parallel_for(0, 4, [&](int turns) { work(turns); });
+      return;
+    }
+#endif
+    for(int turns = 0; turns < 4; ++turns)
+      work(turns);
+  }
+
+  // The best placement of the chart in one turn: every column of the
+  // chart checked against the skyline at every position, at most n
+  // columns times its width.
+  Placement lowest_placement(const Profile& p, int turns) const
+  {
+    const long side = static_cast<long>(n_);
+    const long width = static_cast<long>(p.low.size());
+    Placement best;
+    for(long x = 0; x + width <= side; ++x)
+    {
+      long y = 0;
+      for(long c = 0; c < width; ++c)
+        y = (std::max)(y, skyline_[x + c] - p.low[c]);
+      const long top = y + p.height;
+      if(top > side)
+        continue;
+      // The cells left empty below the chart, at a small weight: enough
+      // to prefer a dent the chart fits, not to climb for it.
+      long waste = 0;
+      for(long c = 0; c < width; ++c)
+        waste += y + p.low[c] - skyline_[x + c];
+      waste = waste * waste_weight_percent / 100;
+      Placement here;
+      here.score = top + waste;
+      here.y = y;
+      here.x = x;
+      here.turns = turns;
+      if(here.better_than(best))
+        best = here;
+    }
+    return best;
+  }
 
   // Measured on 10 meshes of CGAL's data (median UV area over the square):
   // 0.559 without the waste term, 0.583 at 2 %, 0.594 at 5 %, 0.582 at 10 %
@@ -144,17 +204,18 @@ private:
   // Rounding of the coordinates must not move a corner out of its cells.
   static constexpr double slack = 1e-9;
 
-  bool profile(const Profile_chart& chart, double scale, int turns, Profile& p)
+  bool profile(const Profile_chart& chart, double scale, int turns, Profile& p) const
   {
     const double to_cells = scale * chart.density * double(n_);
-    points_.resize(chart.number_of_corners);
+    std::vector<Packing_point>& points = p.points;
+    points.resize(chart.number_of_corners);
     Packing_box box;
     for(std::size_t k = 0; k < chart.number_of_corners; ++k)
     {
       Packing_point q = chart.corners[k];
       for(int t = 0; t < turns; ++t)
         q = quarter_turn(q);
-      points_[k] = q;
+      points[k] = q;
       box.add(q);
     }
     const double w = to_cells * box.width(), h = to_cells * box.height();
@@ -168,7 +229,7 @@ private:
     {
       Packing_point t[3];
       for(int j = 0; j < 3; ++j)
-        t[j] = { to_cells * (points_[k + j].x - box.xmin), to_cells * (points_[k + j].y - box.ymin) };
+        t[j] = { to_cells * (points[k + j].x - box.xmin), to_cells * (points[k + j].y - box.ymin) };
       const double xmin = (std::min)(t[0].x, (std::min)(t[1].x, t[2].x));
       const double xmax = (std::max)(t[0].x, (std::max)(t[1].x, t[2].x));
       const long c0 = (std::max)(0L, static_cast<long>(std::floor(xmin - slack)));
@@ -210,8 +271,8 @@ private:
 
   std::size_t n_, pad_;
   std::vector<long> skyline_;
-  std::vector<Packing_point> points_;
   Profile profiles_[4];
+  bool parallel_ = false;
 };
 
 } // namespace internal
