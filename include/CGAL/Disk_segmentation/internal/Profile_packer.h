@@ -13,12 +13,7 @@
 #define CGAL_DISK_SEGMENTATION_INTERNAL_PROFILE_PACKER_H
 
 #include <CGAL/Disk_segmentation/internal/packing_geometry.h>
-
-#include <CGAL/use.h>
-
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/parallel_for.h>
-#endif
+#include <CGAL/Disk_segmentation/internal/parallel.h>
 
 #include <algorithm>
 #include <array>
@@ -88,7 +83,7 @@ public:
       // one scan over all turns and columns, whatever the threads.
       bool fits[4];
       Placement found[4];
-      for_each_turn([&](int turns) {
+      for_each_piece(4, parallel_, [&](int turns) {
         fits[turns] = profile(charts[i], scale, turns, profiles_[turns]);
         if(fits[turns])
           found[turns] = lowest_placement(profiles_[turns], turns);
@@ -118,14 +113,7 @@ public:
 
   // Whether the turns of a chart are profiled and placed on several threads
   // (with TBB). The layout is the same either way.
-  void set_parallel(bool parallel)
-  {
-#ifdef CGAL_LINKED_WITH_TBB
-    parallel_ = parallel;
-#else
-    CGAL_USE(parallel);
-#endif
-  }
+  void set_parallel(bool parallel) { parallel_ = with_tbb && parallel; }
 
 private:
   // A chart's footprint: per column, the lowest cell its padding needs free
@@ -148,20 +136,6 @@ private:
     // The order of the scan: a later placement wins only if it is better.
     bool better_than(const Placement& o) const { return score < o.score || (score == o.score && y < o.y); }
   };
-
-  template <typename Work>
-  void for_each_turn(const Work& work) const
-  {
-#ifdef CGAL_LINKED_WITH_TBB
-    if(parallel_)
-    {
-      tbb::parallel_for(0, 4, [&](int turns) { work(turns); });
-      return;
-    }
-#endif
-    for(int turns = 0; turns < 4; ++turns)
-      work(turns);
-  }
 
   // The best placement of the chart in one turn: every column of the
   // chart checked against the skyline at every position, at most n

@@ -14,10 +14,9 @@
 
 #include <CGAL/Disk_segmentation/internal/Profile_packer.h>
 
-#include <CGAL/use.h>
+#include <CGAL/Disk_segmentation/internal/parallel.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/parallel_for.h>
 #include <atomic>
 #endif
 
@@ -165,7 +164,7 @@ public:
       // turns of the large charts side by side, 0.67 with those of all
       // charts (cheese, 922 charts: 0.60).
       const bool side_by_side = parallel_;
-      for_each_turn(side_by_side, [&](int eighths) {
+      for_each_piece(8, side_by_side, [&](int eighths) {
         usable_[eighths] = eighths % step == 0 && footprint(charts[i], scale, eighths, footprints_[eighths]);
       });
       if(std::find(usable_, usable_ + 8, true) == usable_ + 8)
@@ -200,14 +199,7 @@ public:
 
   // Whether the turns of a large chart are rasterized and searched on
   // several threads (with TBB). The layout is the same either way.
-  void set_parallel(bool parallel)
-  {
-#ifdef CGAL_LINKED_WITH_TBB
-    parallel_ = parallel;
-#else
-    CGAL_USE(parallel);
-#endif
-  }
+  void set_parallel(bool parallel) { parallel_ = with_tbb && parallel; }
 
 private:
   typedef std::pair<long, long> Interval;  // cells [first, end) of a row
@@ -223,22 +215,6 @@ private:
       return top < o.top || (top == o.top && (y < o.y || (y == o.y && (x < o.x || (x == o.x && turns < o.turns)))));
     }
   };
-
-  template <typename Work>
-  static void for_each_turn(bool side_by_side, const Work& work)
-  {
-#ifdef CGAL_LINKED_WITH_TBB
-    if(side_by_side)
-    {
-      tbb::parallel_for(0, 8, [&](int eighths) { work(eighths); });
-      return;
-    }
-#else
-    CGAL_USE(side_by_side);
-#endif
-    for(int eighths = 0; eighths < 8; ++eighths)
-      work(eighths);
-  }
 
   // The least position (top, then row, then column, then turn) over the
   // usable turns: every turn is tried row by row, up to the row where even
@@ -280,7 +256,7 @@ private:
 #else
     long lowest_top = (std::numeric_limits<long>::max)();
 #endif
-    for_each_turn(true, [&](int eighths) {
+    for_each_piece(8, true, [&](int eighths) {
       if(!usable_[eighths])
         return;
       const Footprint& f = footprints_[eighths];

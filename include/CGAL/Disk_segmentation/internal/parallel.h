@@ -42,6 +42,32 @@ void within_arena(unsigned int threads, const Work& work)
   work();
 }
 
+// Whether the TBB loops below can run in parallel at all.
+#ifdef CGAL_LINKED_WITH_TBB
+constexpr bool with_tbb = true;
+#else
+constexpr bool with_tbb = false;
+#endif
+
+// Runs `work(i)` for i in [0, n): as tasks of the current arena (see
+// within_arena()) if `parallel`, else in order. For a few large pieces of
+// work; each call must touch only its own data.
+template <typename Work>
+void for_each_piece(int n, bool parallel, const Work& work)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if(parallel)
+  {
+    tbb::parallel_for(0, n, [&](int i) { work(i); });
+    return;
+  }
+#else
+  CGAL_USE(parallel);
+#endif
+  for(int i = 0; i < n; ++i)
+    work(i);
+}
+
 // Runs `work(i)` for i in [0, n), on up to `threads` threads (0: TBB's
 // choice). Each call must touch only its own data.
 template <typename Work>
@@ -58,6 +84,8 @@ void for_each_index(std::size_t n, unsigned int threads, const Work& work)
     });
     return;
   }
+#else
+  CGAL_USE(threads);
 #endif
   for(std::size_t i = 0; i < n; ++i)
     work(i);
