@@ -391,27 +391,40 @@ private:
   {
     std::uint16_t* free = &free_run_[r * n_];
     std::uint16_t* occupied = &occupied_run_[r * n_];
-    std::uint16_t next_free = 0, next_occupied = 0, longest = 0;
     std::uint16_t* block = &block_longest_[r * blocks_per_row_];
     std::fill(block, block + blocks_per_row_, std::uint16_t(0));
-    for(std::size_t c = n_; c-- > 0;)
+    std::size_t longest = 0;
+    // Run by run (a cell by cell scan was 1.6 % of one thread's time): a
+    // free run [c, e), then an occupied run [e, o).
+    for(std::size_t c = 0; c < n_;)
     {
-      if(atlas_.first_set(r, c, c + 1) == c)
+      const std::size_t e = atlas_.first_set(r, c, n_);
+      for(std::size_t k = c; k < e; ++k)
       {
-        next_free = 0;
-        ++next_occupied;
+        free[k] = static_cast<std::uint16_t>(e - k);
+        occupied[k] = 0;
       }
-      else
+      if(e > c)
       {
-        next_occupied = 0;
-        ++next_free;
+        longest = (std::max)(longest, e - c);
+        // In each block, the longest free run starting there starts at
+        // the run's first cell in that block.
+        std::size_t b = c >> block_bits;
+        block[b] = (std::max)(block[b], static_cast<std::uint16_t>(e - c));
+        for(++b; (b << block_bits) < e; ++b)
+          block[b] = (std::max)(block[b], static_cast<std::uint16_t>(e - (b << block_bits)));
       }
-      free[c] = next_free;
-      occupied[c] = next_occupied;
-      longest = (std::max)(longest, next_free);
-      block[c >> block_bits] = (std::max)(block[c >> block_bits], next_free);
+      if(e >= n_)
+        break;
+      const std::size_t o = atlas_.first_clear(r, e);
+      for(std::size_t k = e; k < o; ++k)
+      {
+        occupied[k] = static_cast<std::uint16_t>(o - k);
+        free[k] = 0;
+      }
+      c = o;
     }
-    longest_free_[r] = longest;
+    longest_free_[r] = static_cast<long>(longest);
   }
 
   // Rasterizes the chart at `scale` after `eighths` eighths of a turn.
