@@ -13,7 +13,6 @@
 #define CGAL_DISK_SEGMENTATION_INTERNAL_RASTER_PACKER_H
 
 #include <CGAL/Disk_segmentation/internal/Profile_packer.h>
-
 #include <CGAL/Disk_segmentation/internal/parallel.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -284,7 +283,6 @@ private:
     });
     return *std::min_element(found, found + 8);
   }
-
 
   // A chart in one turn: the cells it covers (`core`, offset by the
   // padding) and the cells that must be free for it (`zone`: the core
