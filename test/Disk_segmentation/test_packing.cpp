@@ -694,6 +694,7 @@ TEST(Packing, BadParametersThrow)
   EXPECT_THROW(DS::pack_patches(c.mesh, c.patch, c.uv, DS::parameters::padding_in_texels(-1.)), DS::Input_error);
   EXPECT_THROW(DS::pack_patches(c.mesh, c.patch, c.uv, DS::parameters::padding_in_texels(nan)), DS::Input_error);
   EXPECT_THROW(DS::pack_patches(c.mesh, c.patch, c.uv, DS::parameters::padding_in_texels(inf)), DS::Input_error);
+  EXPECT_THROW(DS::pack_patches(c.mesh, c.patch, c.uv, DS::parameters::number_of_threads(-1)), DS::Input_error);
   EXPECT_THROW(DS::pack_patches(c.mesh, c.patch, c.uv,
                                 DS::parameters::texture_resolution(64u).padding_in_texels(32.)),
                DS::Input_error);

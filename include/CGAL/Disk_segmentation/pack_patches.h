@@ -101,10 +101,7 @@ Packing_settings packing_settings(const NamedParameters& np)
   if(!(2. * s.padding < s.resolution))
     throw Input_error("pack_patches: padding_in_texels leaves no room: twice the padding must be "
                       "less than texture_resolution");
-  s.threads = static_cast<unsigned int>((std::min)(
-    count_parameter(choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_threads), 0u),
-                    "number_of_threads"),
-    std::size_t((std::numeric_limits<unsigned int>::max)())));
+  s.threads = number_of_threads_parameter(np);
   return s;
 }
 

@@ -167,10 +167,7 @@ Parameterization_settings parameterization_settings(const NamedParameters& np)
                               default_parameterization_method);
   s.use_fallback = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::use_fallback), true);
   s.require_disks = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::require_disk_patches), true);
-  s.threads = static_cast<unsigned int>((std::min)(
-    count_parameter(choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_threads), 0u),
-                    "number_of_threads"),
-    std::size_t((std::numeric_limits<unsigned int>::max)())));
+  s.threads = number_of_threads_parameter(np);
   s.bound = distortion_bound_parameters(np);
   s.smooth_borders = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::smooth_borders), true);
   s.merge_charts = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::merge_charts), true);

@@ -16,7 +16,9 @@
 
 #include <boost/property_map/property_map.hpp>
 
+#include <algorithm>
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <tuple>
 #include <type_traits>
@@ -40,6 +42,19 @@ std::size_t count_parameter(const T& value, const char* name)
     if(value < 0)
       throw Input_error(std::string(name) + " must not be negative (got " + std::to_string(value) + ")");
   return static_cast<std::size_t>(value);
+}
+
+// The `number_of_threads` named parameter (0, TBB's choice, by default);
+// counts above what an unsigned int holds mean "as many as there are".
+template <typename NamedParameters>
+unsigned int number_of_threads_parameter(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  return static_cast<unsigned int>((std::min)(
+    count_parameter(choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_threads), 0u),
+                    "number_of_threads"),
+    std::size_t((std::numeric_limits<unsigned int>::max)())));
 }
 
 // Patch ids are written and read as integers; a floating-point patch map
