@@ -173,8 +173,11 @@ int main(int argc, char** argv)
                  "largest s1 s2 and 1/(s1 s2) of any triangle (inf: no bound)")->capture_default_str();
   app.add_option("--max-stretch-p95", bound.max_stretch_p95,
                  "largest 95th percentile of s1/s2 over a chart's triangles (inf: no bound)")->capture_default_str();
+  app.add_option("--min-convexity", bound.min_convexity,
+                 "smallest UV area / UV convex hull area of a chart holding 3% of the mesh's area or more "
+                 "(0: no bound; packs tighter)")->capture_default_str();
   app.add_flag("--unbounded", unbounded,
-               "no distortion bound: the paper's charts (only invalid ones are redone or split)");
+               "no distortion or convexity bound: the paper's charts (only invalid ones are redone or split)");
   app.add_flag("--rough-borders", rough_borders,
                "keep the saw teeth of chart borders (the paper's segmentation; smoothed and straightened by default)");
   app.add_option("--max-chart-faces", max_chart_faces,
@@ -246,6 +249,7 @@ int main(int argc, char** argv)
         .max_area_distortion(unbounded ? inf : bound.max_area_distortion)
         .max_stretch(unbounded ? inf : bound.max_stretch).max_area_scale(unbounded ? inf : bound.max_area_scale)
         .max_stretch_p95(unbounded ? inf : bound.max_stretch_p95)
+        .min_convexity(unbounded ? 0. : bound.min_convexity)
         .smooth_borders(!rough_borders)
         .straighten_borders(!rough_borders)
         .max_chart_faces(max_chart_faces).packing_method(packer)

@@ -64,12 +64,13 @@ class Atlas:
 
 
 def _atlas_options(method, max_angle_distortion, max_area_distortion, max_stretch, max_area_scale,
-                   max_stretch_p95, unbounded, rough_borders, resolution, padding, threads, seed, n, k,
+                   max_stretch_p95, min_convexity, unbounded, rough_borders, resolution, padding, threads, seed, n, k,
                    threshold, packer, max_chart_faces, use_fallback):
     return {
         "method": method, "max_angle_distortion": max_angle_distortion,
         "max_area_distortion": max_area_distortion, "max_stretch": max_stretch,
-        "max_area_scale": max_area_scale, "max_stretch_p95": max_stretch_p95, "unbounded": bool(unbounded),
+        "max_area_scale": max_area_scale, "max_stretch_p95": max_stretch_p95,
+        "min_convexity": min_convexity, "unbounded": bool(unbounded),
         "rough_borders": bool(rough_borders), "resolution": resolution, "padding": padding, "threads": threads,
         "seed": seed, "n": n, "k": k, "threshold": threshold, "packer": packer,
         "max_chart_faces": max_chart_faces, "use_fallback": bool(use_fallback),
@@ -82,6 +83,7 @@ def atlas(vertices, faces, method=_disk_uv.default_parameterization_method,
           max_stretch=_disk_uv.default_max_stretch,
           max_area_scale=_disk_uv.default_max_area_scale,
           max_stretch_p95=_disk_uv.default_max_stretch_p95,
+          min_convexity=_disk_uv.default_min_convexity,
           unbounded=False, rough_borders=False, resolution=1024, padding=2.0, threads=0, seed=None,
           n=10, k=5, threshold=_disk_uv.default_merge_threshold, packer="tight",
           max_chart_faces=_disk_uv.default_max_chart_faces, use_fallback=True, face_groups=None):
@@ -94,7 +96,9 @@ def atlas(vertices, faces, method=_disk_uv.default_parameterization_method,
             (border pinned on a circle), "lscm", "mvc" or "tutte".
         max_angle_distortion, max_area_distortion, max_stretch, max_area_scale,
         max_stretch_p95: the distortion bound every chart meets (see the manual).
-        unbounded: no distortion bound (the paper's charts).
+        min_convexity: smallest UV area / UV convex hull area of a chart
+            holding 3% of the mesh's area or more (0: no bound).
+        unbounded: no distortion or convexity bound (the paper's charts).
         rough_borders: keep the saw-toothed chart borders of the paper (neither smoothed nor straightened).
         resolution, padding: texture side and gap between charts, in texels.
         threads: at most this many threads (0: all); the result does not depend on it.
@@ -115,7 +119,7 @@ def atlas(vertices, faces, method=_disk_uv.default_parameterization_method,
         an :class:`Atlas`.
     """
     options = _atlas_options(method, max_angle_distortion, max_area_distortion, max_stretch, max_area_scale,
-                             max_stretch_p95, unbounded, rough_borders, resolution, padding, threads, seed, n,
+                             max_stretch_p95, min_convexity, unbounded, rough_borders, resolution, padding, threads, seed, n,
                              k, threshold, packer, max_chart_faces, use_fallback)
     options["face_groups"] = face_groups
     result = _disk_uv.atlas(vertices, faces, options)

@@ -238,7 +238,8 @@ def add_atlas_arguments(parser):
     group.add_argument("--max-stretch", type=float, default=d.default_max_stretch)
     group.add_argument("--max-area-scale", type=float, default=d.default_max_area_scale)
     group.add_argument("--max-stretch-p95", type=float, default=d.default_max_stretch_p95)
-    group.add_argument("--unbounded", action="store_true", help="no distortion bound (the paper's charts)")
+    group.add_argument("--min-convexity", type=float, default=d.default_min_convexity)
+    group.add_argument("--unbounded", action="store_true", help="no distortion or convexity bound (the paper's charts)")
     group.add_argument("--rough-borders", action="store_true", help="keep the paper's saw-toothed borders")
     group.add_argument("--threads", type=int, default=1, help="threads per mesh (default 1: one mesh per core)")
     group.add_argument("--repair", action="store_true", help="repair each mesh's soup before the atlas")
@@ -266,7 +267,7 @@ def main(argv=None):
                          max_angle_distortion=args.max_angle_distortion,
                          max_area_distortion=args.max_area_distortion, max_stretch=args.max_stretch,
                          max_area_scale=args.max_area_scale, max_stretch_p95=args.max_stretch_p95,
-                         unbounded=args.unbounded, rough_borders=args.rough_borders, threads=args.threads)
+                         min_convexity=args.min_convexity, unbounded=args.unbounded, rough_borders=args.rough_borders, threads=args.threads)
     try:
         # Bad options fail here, once, rather than on every mesh.
         import disk_uv

@@ -193,6 +193,7 @@ DS::Distortion_bound bound_from(const py::dict& o, bool& unbounded)
   bound.max_stretch = real_option(o, "max_stretch");
   bound.max_area_scale = real_option(o, "max_area_scale");
   bound.max_stretch_p95 = real_option(o, "max_stretch_p95");
+  bound.min_convexity = real_option(o, "min_convexity");
   unbounded = o["unbounded"].cast<bool>();
   return bound;
 }
@@ -357,6 +358,7 @@ py::dict run_atlas(const py::handle& vertices, const py::handle& faces, const py
       .max_area_distortion(unbounded ? inf : bound.max_area_distortion)
       .max_stretch(unbounded ? inf : bound.max_stretch).max_area_scale(unbounded ? inf : bound.max_area_scale)
       .max_stretch_p95(unbounded ? inf : bound.max_stretch_p95)
+      .min_convexity(unbounded ? 0. : bound.min_convexity)
       .smooth_borders(!o["rough_borders"].cast<bool>())
       .straighten_borders(!o["rough_borders"].cast<bool>())
       .max_chart_faces(count_option(o, "max_chart_faces")).packing_method(packer)
@@ -401,7 +403,7 @@ py::dict run_atlas(const py::handle& vertices, const py::handle& faces, const py
         CGAL::Real_timer timer;
         timer.start();
         const auto again = settings.max_angle_distortion(inf).max_area_distortion(inf).max_stretch(inf)
-                             .max_area_scale(inf).max_stretch_p95(inf);
+                             .max_area_scale(inf).max_stretch_p95(inf).min_convexity(0.);
         report.parameterization = DS::parameterize_patches(mesh, patch, uv, again);
         report.number_of_charts = report.parameterization.charts.size();
         report.packing = DS::pack_patches(mesh, patch, uv, again);
@@ -590,4 +592,5 @@ PYBIND11_MODULE(_disk_uv, m)
   m.attr("default_max_stretch") = bound.max_stretch;
   m.attr("default_max_area_scale") = bound.max_area_scale;
   m.attr("default_max_stretch_p95") = bound.max_stretch_p95;
+  m.attr("default_min_convexity") = bound.min_convexity;
 }

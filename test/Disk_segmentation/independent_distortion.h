@@ -24,6 +24,9 @@ struct Chart_measure
   double max_stretch = 1; // largest s1/s2
   double min_scale = 1, max_scale = 1;  // extremes of s1 s2, chart scaled to its 3D area
   std::vector<double> stretches;        // s1/s2 of every measured triangle, sorted
+  double hull_area_uv = 0;              // area of the convex hull of the chart's UVs
+  // UV area over the area of its convex hull (1 for a flat layout).
+  double convexity() const { return hull_area_uv > 0 ? area_uv / hull_area_uv : 1; }
   // The value with 95% of the triangles at or below it (nearest rank).
   double stretch_p95() const
   {
@@ -36,6 +39,45 @@ struct Chart_measure
   }
 };
 
+// Area of the convex hull of points, by gift wrapping (the library uses a
+// monotone chain): from the lowest-leftmost point, each next hull vertex is
+// the point with every other point on its left, the farthest on ties.
+inline double convex_hull_area(std::vector<std::array<double, 2> > points)
+{
+  std::sort(points.begin(), points.end());
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  if(points.size() < 3)
+    return 0;
+  auto cross = [](const std::array<double, 2>& o, const std::array<double, 2>& a, const std::array<double, 2>& b) {
+    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+  };
+  auto dist2 = [](const std::array<double, 2>& a, const std::array<double, 2>& b) {
+    return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]);
+  };
+  std::size_t start = 0;
+  for(std::size_t i = 1; i < points.size(); ++i)
+    if(points[i][1] < points[start][1] || (points[i][1] == points[start][1] && points[i][0] < points[start][0]))
+      start = i;
+  std::vector<std::array<double, 2> > hull;
+  std::size_t current = start;
+  do
+  {
+    hull.push_back(points[current]);
+    std::size_t next = current == 0 ? 1 : 0;
+    for(std::size_t i = 0; i < points.size(); ++i)
+    {
+      const double turn = cross(points[current], points[next], points[i]);
+      if(turn < 0 || (turn == 0 && dist2(points[current], points[i]) > dist2(points[current], points[next])))
+        next = i;
+    }
+    current = next;
+  } while(current != start && hull.size() <= points.size());
+  double twice = 0;
+  for(std::size_t i = 0; i < hull.size(); ++i)
+    twice += hull[i][0] * hull[(i + 1) % hull.size()][1] - hull[(i + 1) % hull.size()][0] * hull[i][1];
+  return std::abs(twice) / 2;
+}
+
 // For a triangle with 3D edges a, b and UV edges p, q from corner 0, the
 // metric tensors are G = [a.a a.b; a.b b.b] and H = [p.p p.q; p.q q.q];
 // the eigenvalues of G^-1 H are s1^2 and s2^2, so det H / det G = (s1 s2)^2
@@ -46,6 +88,7 @@ std::map<std::size_t, Chart_measure> measure_charts(const Mesh& tm, PatchMap pat
   struct Face_values { std::size_t chart; double area_3d, area_uv, stretch; };
   std::vector<Face_values> values;
   std::map<std::size_t, Chart_measure> charts;
+  std::map<std::size_t, std::vector<std::array<double, 2> > > chart_uvs;
   for(auto f : faces(tm))
   {
     std::array<std::array<double, 3>, 3> p;
@@ -56,6 +99,7 @@ std::map<std::size_t, Chart_measure> measure_charts(const Mesh& tm, PatchMap pat
       const auto& x = tm.point(target(h, tm));
       p[i] = {{ x.x(), x.y(), x.z() }};
       u[i] = {{ get(uv, h).x(), get(uv, h).y() }};
+      chart_uvs[static_cast<std::size_t>(get(patch, f))].push_back(u[i]);
       ++i;
     }
     double a[3], b[3];
@@ -96,7 +140,10 @@ std::map<std::size_t, Chart_measure> measure_charts(const Mesh& tm, PatchMap pat
     c.max_scale = is_first ? scale : (std::max)(c.max_scale, scale);
   }
   for(auto& entry : charts)
+  {
     std::sort(entry.second.stretches.begin(), entry.second.stretches.end());
+    entry.second.hull_area_uv = convex_hull_area(chart_uvs[entry.first]);
+  }
   return charts;
 }
 

@@ -186,7 +186,11 @@ TEST(Atlas, UnderABoundAChartWithAnInvalidMapIsReplacedNotRedone)
 {
   // Room for the rounding of two different formulas.
   const double slack = 1 + 1e-9;
-  for(const auto& entry : TS::measure_charts(tm, a.patch, a.uv))
+  const std::map<std::size_t, TS::Chart_measure> charts = TS::measure_charts(tm, a.patch, a.uv);
+  double mesh_area = 0;
+  for(const auto& entry : charts)
+    mesh_area += entry.second.area_3d;
+  for(const auto& entry : charts)
   {
     const TS::Chart_measure& c = entry.second;
     if(!(c.angle_mean <= b.max_angle_distortion * slack) || !(c.area_mean <= b.max_area_distortion * slack) ||
@@ -196,14 +200,22 @@ TEST(Atlas, UnderABoundAChartWithAnInvalidMapIsReplacedNotRedone)
              << "chart " << entry.first << ": mean |log s1/s2| " << c.angle_mean << ", mean |log s1 s2| "
              << c.area_mean << ", s1/s2 up to " << c.max_stretch << ", s1 s2 in [" << c.min_scale << ", "
              << c.max_scale << "], p95 s1/s2 " << c.stretch_p95();
+    // The convexity bound holds from a share of the mesh's area on; a
+    // little rounding room on both sides of that share.
+    if(c.area_3d >= DS::Distortion_bound::convexity_area_fraction * mesh_area * (1 + 1e-6) &&
+       !(c.convexity() * (1 + 1e-6) >= b.min_convexity))
+      return ::testing::AssertionFailure() << "chart " << entry.first << " of " << c.area_3d / mesh_area
+                                           << " of the mesh's area fills " << c.convexity()
+                                           << " of its UV convex hull";
   }
   return ::testing::AssertionSuccess();
 }
 
 DS::Distortion_bound make_bound(double angle, double area, double stretch, double scale,
-                               double p95 = std::numeric_limits<double>::infinity())
+                               double p95 = std::numeric_limits<double>::infinity(), double convexity = 0)
 {
   DS::Distortion_bound b;
+  b.min_convexity = convexity;
   b.max_stretch_p95 = p95;
   b.max_angle_distortion = angle;
   b.max_area_distortion = area;
@@ -221,6 +233,7 @@ TEST(Atlas, EveryChartMeetsTheDistortionBoundItIsGiven)
     make_bound(inf, 0.03, inf, inf),     // areas only, tight
     make_bound(inf, inf, 1.5, 1.5),      // the per-triangle tails only
     make_bound(inf, inf, inf, inf, 1.05),  // the 95th percentile of s1/s2 only
+    make_bound(inf, inf, inf, inf, inf, 0.9),  // the convexity of large charts only
     make_bound(0.3, 0.4, 4., 4.) };      // loose
   std::vector<bool> paper_breaks(bounds.size(), false);
   for(const char* name : { "elephant.off", "knot1.off", "bones.off" })
@@ -267,19 +280,23 @@ TEST(Atlas, TheBoundParametersOverrideTheBoundAndAreChecked)
 {
   Mesh tm = load("knot1.off");
   const double inf = std::numeric_limits<double>::infinity();
-  // Individual parameters win over distortion_bound(): all four infinite
-  // give the paper's charts.
+  // Individual parameters win over distortion_bound(): all infinite (and
+  // no convexity bound) give the paper's charts.
   Mesh paper_mesh = tm;
   const Atlas paper = make_atlas(paper_mesh, DS::parameters::distortion_bound(DS::Distortion_bound::unbounded()));
   const Atlas overridden = make_atlas(tm, DS::parameters::distortion_bound(DS::Distortion_bound())
                                             .max_angle_distortion(inf).max_area_distortion(inf)
-                                            .max_stretch(inf).max_area_scale(inf).max_stretch_p95(inf));
+                                            .max_stretch(inf).max_area_scale(inf).max_stretch_p95(inf)
+                                            .min_convexity(0.));
   EXPECT_EQ(overridden.report.number_of_charts, paper.report.number_of_charts);
   EXPECT_THROW(make_atlas(tm, DS::parameters::max_angle_distortion(0.)), DS::Input_error);
   EXPECT_THROW(make_atlas(tm, DS::parameters::max_area_distortion(-1.)), DS::Input_error);
   EXPECT_THROW(make_atlas(tm, DS::parameters::max_stretch(1.)), DS::Input_error);
   EXPECT_THROW(make_atlas(tm, DS::parameters::max_area_scale(std::nan(""))), DS::Input_error);
   EXPECT_THROW(make_atlas(tm, DS::parameters::max_stretch_p95(1.)), DS::Input_error);
+  EXPECT_THROW(make_atlas(tm, DS::parameters::min_convexity(1.)), DS::Input_error);
+  EXPECT_THROW(make_atlas(tm, DS::parameters::min_convexity(-0.1)), DS::Input_error);
+  EXPECT_THROW(make_atlas(tm, DS::parameters::min_convexity(std::nan(""))), DS::Input_error);
   EXPECT_THROW(DS::check_uv_atlas_parameters(DS::parameters::max_stretch(0.5)), DS::Input_error);
 }
 

@@ -30,8 +30,17 @@ namespace Disk_segmentation {
 ///
 /// The first two keep the texture's average look, the last two its worst
 /// spots (a nearly collapsed triangle samples the texture at one point).
-/// A single triangle is laid out isometrically, so it meets every bound:
-/// splitting always ends. The defaults were chosen by comparing bounds on
+///
+/// One field bounds a chart's shape rather than its distortion (ours, not
+/// in the paper): `min_convexity` bounds from below the ratio of a chart's
+/// UV area to the area of the convex hull of its UV layout, for every chart
+/// holding at least `convexity_area_fraction` of the mesh's 3D area. A
+/// bent or branching chart leaves room inside its hull that no other chart
+/// fills, which is what keeps the atlas from packing tightly (see
+/// \ref DS_Bound in the user manual); splitting it costs a little cut length.
+///
+/// A single triangle is laid out isometrically and is convex, so it meets
+/// every bound: splitting always ends. The defaults were chosen by comparing bounds on
 /// 10 meshes of \cgal's data set (charts, distortion, cut length and time;
 /// see \ref DS_Bound in the user manual); `unbounded()` keeps the paper's charts.
 struct Distortion_bound
@@ -46,6 +55,13 @@ struct Distortion_bound
   double max_area_scale = 6.;
   /// Largest 95th percentile of \f$ s_1/s_2 \f$ over a chart's triangles.
   double max_stretch_p95 = 1.15;
+  /// Smallest UV area / UV convex hull area of a chart holding at least
+  /// `convexity_area_fraction` of the mesh's 3D area (0: no bound).
+  double min_convexity = 0.8;
+
+  /// Charts below this fraction of the mesh's 3D area are not bound by
+  /// `min_convexity`: they fill the holes between larger ones.
+  static constexpr double convexity_area_fraction = 0.03;
 
   /// No bound: every valid chart is kept (the paper's behaviour).
   static Distortion_bound unbounded()
@@ -53,19 +69,21 @@ struct Distortion_bound
     const double inf = std::numeric_limits<double>::infinity();
     Distortion_bound b;
     b.max_angle_distortion = b.max_area_distortion = b.max_stretch = b.max_area_scale = b.max_stretch_p95 = inf;
+    b.min_convexity = 0.;
     return b;
   }
 
-  /// Whether every field is infinite.
+  /// Whether every field bounds nothing (infinite, `min_convexity` 0).
   bool is_unbounded() const
   {
     const double inf = std::numeric_limits<double>::infinity();
     return max_angle_distortion == inf && max_area_distortion == inf && max_stretch == inf && max_area_scale == inf &&
-           max_stretch_p95 == inf;
+           max_stretch_p95 == inf && min_convexity == 0.;
   }
 
   /// Throws `Input_error` naming the first field out of range (NaN, a mean
-  /// bound \f$ \le 0 \f$, a per-triangle bound \f$ \le 1 \f$).
+  /// bound \f$ \le 0 \f$, a per-triangle bound \f$ \le 1 \f$, a
+  /// `min_convexity` outside \f$ [0, 1) \f$).
   void check() const
   {
     if(!(max_angle_distortion > 0))
@@ -78,6 +96,8 @@ struct Distortion_bound
       throw Input_error("max_area_scale must be > 1 (infinity disables it)");
     if(!(max_stretch_p95 > 1))
       throw Input_error("max_stretch_p95 must be > 1 (infinity disables it)");
+    if(!(min_convexity >= 0 && min_convexity < 1))
+      throw Input_error("min_convexity must be in [0, 1) (0 disables it)");
   }
 };
 

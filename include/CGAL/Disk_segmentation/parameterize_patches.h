@@ -15,6 +15,7 @@
 #include <CGAL/Disk_segmentation/refine_to_topological_disks.h>
 #include <CGAL/Disk_segmentation/internal/Border_smoother.h>
 #include <CGAL/Disk_segmentation/internal/Chart_rerouting.h>
+#include <CGAL/Disk_segmentation/internal/Chart_convexity.h>
 #include <CGAL/Disk_segmentation/internal/Chart_distortion.h>
 #include <CGAL/Disk_segmentation/internal/Chart_merging.h>
 #include <CGAL/Disk_segmentation/internal/Chart_parameterization.h>
@@ -135,7 +136,7 @@ struct Parameterization_settings
   bool smooth_borders, merge_charts, straighten_borders;
 };
 
-// The distortion bound from its four named parameters.
+// The distortion bound from its named parameters.
 template <typename NamedParameters>
 Distortion_bound distortion_bound_parameters(const NamedParameters& np)
 {
@@ -152,6 +153,7 @@ Distortion_bound distortion_bound_parameters(const NamedParameters& np)
     choose_parameter(get_parameter(np, Disk_segmentation::internal_np::max_area_scale), b.max_area_scale);
   b.max_stretch_p95 =
     choose_parameter(get_parameter(np, Disk_segmentation::internal_np::max_stretch_p95), b.max_stretch_p95);
+  b.min_convexity = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::min_convexity), b.min_convexity);
   b.check();
   return b;
 }
@@ -452,6 +454,7 @@ struct Split_rule
   bool use_fallback;
   const Border_smoother* smoother = nullptr;  // smooths the borders between pieces, if not null
   const Interior_curvature* curvature = nullptr;  // predicts charts too curved to meet the bound, if not null
+  double smallest_bound_convex_area = 0.;  // common_area() from which bound.min_convexity applies
 
   bool too_large(std::size_t faces) const { return faces > max_chart_faces; }
 
@@ -484,7 +487,17 @@ struct Split_rule
       return false;
     const Chart_distortion d = chart_distortion(m, c);
     measured_excess = excess(d);
-    return !d.meets(bound);
+    return !d.meets(bound) || too_concave(c);
+  }
+
+  bool too_concave(const Chart& c) const
+  {
+    if(!(bound.min_convexity > 0.))
+      return false;
+    double area = 0.;
+    for(Index f : c.faces)
+      area += m.common_area(f);
+    return area >= smallest_bound_convex_area && chart_convexity(c) < bound.min_convexity;
   }
 
   // How far a chart is over the bounds on the means, per unit of 3D area
@@ -730,7 +743,8 @@ Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, con
   if(bounded)
     curvature.reset(new internal::Interior_curvature(m));
   const internal::Split_rule needs_split{ m, settings.bound, settings.max_chart_faces, use_fallback,
-                                          settings.smooth_borders ? &smoother : nullptr, curvature.get() };
+                                          settings.smooth_borders ? &smoother : nullptr, curvature.get(),
+                                          Distortion_bound::convexity_area_fraction * m.total_common_area() };
   internal::Per_thread_splitter splitter(m);
   internal::Progress progress = internal::Progress::from(np);
 
@@ -1006,12 +1020,13 @@ Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, con
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{distortion_bound}
-///     \cgalParamDescription{the distortion every chart of two faces or more must meet (only with
-///       `use_fallback`); a single triangle is laid out isometrically}
+///     \cgalParamDescription{the distortion every chart of two faces or more must meet, and the
+///       convexity of the large ones (only with `use_fallback`); a single triangle is laid out
+///       isometrically}
 ///     \cgalParamType{`Distortion_bound`}
 ///     \cgalParamDefault{`Distortion_bound()`; `Distortion_bound::unbounded()` keeps the paper's charts}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{max_angle_distortion, max_area_distortion, max_stretch, max_area_scale, max_stretch_p95}
+///   \cgalParamNBegin{max_angle_distortion, max_area_distortion, max_stretch, max_area_scale, max_stretch_p95, min_convexity}
 ///     \cgalParamDescription{override one field of `distortion_bound`}
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{the field of `distortion_bound`}

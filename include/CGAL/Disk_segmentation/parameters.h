@@ -43,6 +43,7 @@ enum max_angle_distortion_t { max_angle_distortion };
 enum max_stretch_t { max_stretch };
 enum max_area_scale_t { max_area_scale };
 enum max_stretch_p95_t { max_stretch_p95 };
+enum min_convexity_t { min_convexity };
 enum merge_tree_t { merge_tree };
 enum distortion_bound_t { distortion_bound };
 enum smooth_borders_t { smooth_borders };
@@ -104,6 +105,7 @@ struct Named_function_parameters
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(max_stretch_t, max_stretch)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(max_area_scale_t, max_area_scale)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(max_stretch_p95_t, max_stretch_p95)
+  CGAL_DISK_SEGMENTATION_ADD_PARAMETER(min_convexity_t, min_convexity)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(merge_tree_t, merge_tree)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(distortion_bound_t, distortion_bound)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(smooth_borders_t, smooth_borders)
@@ -199,7 +201,10 @@ CGAL_DISK_SEGMENTATION_ADD_PARAMETER(max_area_scale_t, max_area_scale)
 /// Largest 95th percentile of \f$ s_1/s_2 \f$ over the triangles of a chart (`double`, see `Distortion_bound`).
 CGAL_DISK_SEGMENTATION_ADD_PARAMETER(max_stretch_p95_t, max_stretch_p95)
 /// \ingroup PkgDiskSegmentationRef
-/// All the bounds at once (`Distortion_bound`); the five parameters above override its fields.
+/// Smallest UV area / UV convex hull area of a large chart (`double` in \f$ [0, 1) \f$, see `Distortion_bound`).
+CGAL_DISK_SEGMENTATION_ADD_PARAMETER(min_convexity_t, min_convexity)
+/// \ingroup PkgDiskSegmentationRef
+/// All the bounds at once (`Distortion_bound`); the six parameters above override its fields.
 CGAL_DISK_SEGMENTATION_ADD_PARAMETER(distortion_bound_t, distortion_bound)
 /// \ingroup PkgDiskSegmentationRef
 /// Whether the saw teeth of region borders are removed (`bool`; see `segment_into_disks()`).

@@ -119,6 +119,21 @@ struct Indexed_triangle_mesh
     return 0.5 * std::sqrt(nx * nx + ny * ny + nz * nz);
   }
 
+  // Area in the units shared by all components (see common_unit()).
+  double common_area(Index f) const
+  {
+    const double unit = common_unit(f);
+    return area(f) * unit * unit;
+  }
+
+  double total_common_area() const
+  {
+    double sum = 0.;
+    for(std::size_t f = 0; f < corners.size(); ++f)
+      sum += common_area(static_cast<Index>(f));
+    return sum;
+  }
+
   // Dual-graph arc length between f and its neighbor across edge i: the path
   // from the centroid of f through the edge midpoint to the neighbor's
   // centroid. It approximates the geodesic distance between the two faces

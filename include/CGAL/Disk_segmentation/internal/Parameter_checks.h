@@ -92,6 +92,7 @@ typedef std::tuple<
   Disk_segmentation::internal_np::max_area_distortion_t, Disk_segmentation::internal_np::max_chart_faces_t,
   Disk_segmentation::internal_np::max_angle_distortion_t, Disk_segmentation::internal_np::max_stretch_t,
   Disk_segmentation::internal_np::max_area_scale_t, Disk_segmentation::internal_np::max_stretch_p95_t,
+  Disk_segmentation::internal_np::min_convexity_t,
   Disk_segmentation::internal_np::merge_tree_t, Disk_segmentation::internal_np::distortion_bound_t,
   Disk_segmentation::internal_np::smooth_borders_t, Disk_segmentation::internal_np::merge_charts_t,
   Disk_segmentation::internal_np::straighten_borders_t,
