@@ -95,6 +95,10 @@ def test_report_and_options():
     assert all(c["angle_distortion"] <= 0.03 for c in bounded.report["charts"])
     loose = disk_uv.atlas(vertices, faces, unbounded=True, rough_borders=True)
     assert loose.number_of_charts < bounded.number_of_charts
+    # The convexity bound splits bent charts: off, fewer charts; stricter, more.
+    default = disk_uv.atlas(vertices, faces)
+    assert disk_uv.atlas(vertices, faces, min_convexity=0).number_of_charts < default.number_of_charts
+    assert disk_uv.atlas(vertices, faces, min_convexity=0.9).number_of_charts > default.number_of_charts
 
 
 def test_segment_gives_disks_of_the_paper():
@@ -194,6 +198,7 @@ def test_bad_arrays_raise_value_error(change, message):
     ({"threads": -2}, "threads"),
     ({"n": 0}, "seed"),
     ({"max_angle_distortion": -1.0}, "angle"),
+    ({"min_convexity": 1.0}, "min_convexity"),
     ({"padding": float("nan")}, "padding"),
     ({"seed": -1}, "seed"),
     ({"face_groups": numpy.zeros(3)}, "face_groups"),
