@@ -29,6 +29,10 @@ void rank_labels_by_first_appearance(const std::vector<Label>& labels, const IsS
                                      const Visit& visit)
 {
   Index next = 0;
+  auto visit_all = [&](const auto& rank_of) {
+    for(const Label& l : labels)
+      visit(is_skipped(l) ? no_index : rank_of(l));
+  };
   const std::size_t table_size = 2 * labels.size();
   bool dense = true;
   for(const Label& l : labels)
@@ -37,33 +41,21 @@ void rank_labels_by_first_appearance(const std::vector<Label>& labels, const IsS
   if(dense)
   {
     std::vector<Index> rank(table_size, no_index);
-    for(const Label& l : labels)
-    {
-      if(is_skipped(l))
-      {
-        visit(no_index);
-        continue;
-      }
+    visit_all([&](const Label& l) {
       Index& r = rank[static_cast<std::size_t>(l)];
       if(r == no_index)
         r = next++;
-      visit(r);
-    }
+      return r;
+    });
     return;
   }
   std::unordered_map<Label, Index> rank;
-  for(const Label& l : labels)
-  {
-    if(is_skipped(l))
-    {
-      visit(no_index);
-      continue;
-    }
-    const Index r = rank.emplace(l, next).first->second;
-    if(r == next)
+  visit_all([&](const Label& l) {
+    const auto inserted = rank.emplace(l, next);
+    if(inserted.second)
       ++next;
-    visit(r);
-  }
+    return inserted.first->second;
+  });
 }
 
 // Groups faces by label: one region per distinct label, regions ordered by

@@ -269,7 +269,8 @@ private:
       bool has_first_seed = false;
       relax_from(std::vector<Index>(1, root), false, [&](Index f, double d)
       {
-        component.push_back(f);
+        if(rng != nullptr)  // only a random seed needs the component's faces
+          component.push_back(f);
         has_first_seed = has_first_seed || f == first_seed;
         if(d > farthest_distance || (d == farthest_distance && f < farthest))
         {
