@@ -1072,6 +1072,96 @@ TEST(Atlas, FreeBorderLscmAndArapKeepAPlanarChartUpToASimilarity)
   EXPECT_EQ(similarity_problem(p.m, c, c.uv, 1e-6), "");
 }
 
+TEST(Atlas, ArapEndsItsIterationsWhereTheEarlyLookSays)
+{
+  // ARAP from LSCM on a curved chart, with a look at the iterate after
+  // arap_early_look_iterations iterations: stopping there (either verdict)
+  // must leave that iterate, going on must leave the iterate of the full
+  // count, each compared with plain iterations run here for that count.
+  Disk_chart p;
+  make_disk_chart(p, [](double x, double y) { return 0.3 * (x * x - y * y) + 0.2 * std::exp(-4. * (x * x + y * y)); });
+  std::vector<DS::internal::Index> all(p.m.number_of_faces());
+  for(DS::internal::Index f = 0; f < all.size(); ++f) all[f] = f;
+  const DS::internal::Chart c = DS::internal::make_chart(p.m, all);
+  const std::vector<DS::internal::Index> border = DS::internal::chart_border_loop(c);
+  ASSERT_FALSE(border.empty());
+  const DS::internal::Chart_geometry g = DS::internal::chart_geometry(p.m, c);
+  DS::internal::Chart start_chart = c;
+  ASSERT_TRUE(DS::internal::free_border_lscm(g, std::vector<std::size_t>(border.begin(), border.end()), start_chart.uv));
+  DS::internal::keep_winding(start_chart);
+  const DS::internal::Chart_uv start = start_chart.uv;
+  auto iterated = [&](int count) {
+    DS::internal::Chart_uv uv = start;
+    EXPECT_EQ(DS::internal::local_global_arap(g, uv, count, [](const DS::internal::Chart_uv&) { return true; }), count);
+    return uv;
+  };
+  auto distance = [](const DS::internal::Chart_uv& a, const DS::internal::Chart_uv& b) {
+    double d = 0.;
+    for(std::size_t i = 0; i < a.size(); ++i)
+      d = (std::max)(d, std::hypot(a[i][0] - b[i][0], a[i][1] - b[i][1]));
+    return d;
+  };
+  const int early = DS::internal::arap_early_look_iterations;
+  const DS::internal::Chart_uv after_early = iterated(early), after_all = iterated(DS::internal::arap_iterations);
+  ASSERT_GT(distance(after_early, after_all), 1e-6);  // else the test could not tell them apart
+
+  for(DS::internal::Early_verdict verdict :
+      { DS::internal::Early_verdict::iterate_on, DS::internal::Early_verdict::good_enough,
+        DS::internal::Early_verdict::hopeless })
+  {
+    int looks = 0;
+    double seen = -1.;
+    const DS::internal::Arap_early_look look = [&](const DS::internal::Chart&, const DS::internal::Chart_uv& uv) {
+      ++looks;
+      seen = distance(uv, after_early);
+      return verdict;
+    };
+    DS::internal::Chart run = c;
+    ASSERT_TRUE(DS::internal::arap_from(run, border, g, start, &look));
+    EXPECT_EQ(looks, 1);
+    EXPECT_LT(seen, 1e-9);
+    const DS::internal::Chart_uv& expected = verdict == DS::internal::Early_verdict::iterate_on ? after_all : after_early;
+    EXPECT_LT(distance(run.uv, expected), 1e-9) << "verdict " << int(verdict);
+  }
+}
+
+TEST(Atlas, TheEarlyVerdictOfTheSplitRuleFollowsTheBound)
+{
+  // A planar chart laid out isometrically meets any bound: good enough at
+  // once. The same layout stretched 1.5 times along u has a mean
+  // |log(s1/s2)| of log 1.5 = 0.41, far over the default 0.06: hopeless.
+  // Under a looser angle bound of 0.5 it is neither.
+  Disk_chart p;
+  make_planar_chart(p);
+  std::vector<DS::internal::Index> all(p.m.number_of_faces());
+  for(DS::internal::Index f = 0; f < all.size(); ++f) all[f] = f;
+  const DS::internal::Chart c = DS::internal::make_chart(p.m, all);
+  DS::internal::Chart_uv flat(c.vertices.size()), stretched(c.vertices.size());
+  for(std::size_t i = 0; i < c.vertices.size(); ++i)
+  {
+    const auto& q = p.m.points[c.vertices[i]];
+    flat[i] = {{ q[0], q[1] }};
+    stretched[i] = {{ 1.5 * q[0], q[1] }};
+  }
+  const DS::internal::Split_rule rule{ p.m, DS::Distortion_bound(), DS::default_max_chart_faces, true };
+  EXPECT_EQ(rule.early_verdict(c, flat), DS::internal::Early_verdict::good_enough);
+  EXPECT_EQ(rule.early_verdict(c, stretched), DS::internal::Early_verdict::hopeless);
+  DS::Distortion_bound loose;
+  loose.max_angle_distortion = 0.5;
+  loose.max_area_distortion = 1.;
+  loose.max_stretch_p95 = 2.;
+  const DS::internal::Split_rule loose_rule{ p.m, loose, DS::default_max_chart_faces, true };
+  EXPECT_EQ(loose_rule.early_verdict(c, stretched), DS::internal::Early_verdict::iterate_on);
+  // No look without a bound or without the fallback.
+  const DS::internal::Split_rule unbounded_rule{ p.m, DS::Distortion_bound::unbounded(), DS::default_max_chart_faces,
+                                                 true };
+  const DS::internal::Split_rule rule_without_fallback{ p.m, DS::Distortion_bound(), DS::default_max_chart_faces,
+                                                        false };
+  EXPECT_FALSE(unbounded_rule.early_look());
+  EXPECT_FALSE(rule_without_fallback.early_look());
+  EXPECT_TRUE(rule.early_look());
+}
+
 TEST(Atlas, FreeBorderLscmIsStationaryForTheConformalEnergyOnACurvedChart)
 {
   // LSCM minimizes the conformal energy with two vertices pinned: on a

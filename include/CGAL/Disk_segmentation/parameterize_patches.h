@@ -323,6 +323,7 @@ void split_and_parameterize(const Indexed_triangle_mesh& m, Splitter& splitter, 
   };
   std::vector<Task> stack;
   stack.push_back(Task{ faces, excess_density, true, std::move(parent) });
+  const Arap_early_look early_look = needs_split.early_look();
   // Ends: see the bound above; every split task has at least two faces and
   // makes parts with fewer faces.
   while(!stack.empty())
@@ -348,7 +349,8 @@ void split_and_parameterize(const Indexed_triangle_mesh& m, Splitter& splitter, 
         outcomes.push_back(outcome);
         continue;
       }
-      outcome = parameterize_chart(m, c, requested, use_fallback, needs_split.on_invalid_map());
+      outcome = parameterize_chart(m, c, requested, use_fallback, needs_split.on_invalid_map(),
+                                   early_look ? &early_look : nullptr);
       double excess = 0.;
       if(task.faces.size() == 1 || !needs_split(c, outcome, excess))
       {
@@ -490,15 +492,52 @@ struct Split_rule
     return !d.meets(bound) || too_concave(c);
   }
 
-  bool too_concave(const Chart& c) const
+  bool too_concave(const Chart& c) const { return too_concave(c, c.uv); }
+
+  bool too_concave(const Chart& c, const Chart_uv& uv) const
   {
     if(!(bound.min_convexity > 0.))
       return false;
     double area = 0.;
     for(Index f : c.faces)
       area += m.common_area(f);
-    return area >= smallest_bound_convex_area && chart_convexity(c) < bound.min_convexity;
+    return area >= smallest_bound_convex_area && chart_convexity(c, uv) < bound.min_convexity;
   }
+
+  // Whether the ARAP iterations of a chart may end early (see
+  // Arap_early_look): when the iterate meets the bound with its mean
+  // distortions at most early_accepted_excess of their bounds, or when a
+  // mean distortion or the 95th percentile of s1/s2 exceeds its bound more
+  // than 1 / early_margin times. Traced on the 4,668 charts parameterized
+  // for the 10 meshes of the peers' table (descent, splits, merges,
+  // reroutes): of the 2,791 that met the bound after 10 iterations, 2,134
+  // met it after 2 within 0.7 of the means' bounds and 8 were that far over
+  // it; of the 1,877 that did not, 1,078 were that far over it after 2 and
+  // 16 met it. A chart accepted early keeps a map a little less converged
+  // (mean distortions about 5 % higher), which leaves less room to merge it
+  // with its neighbors: accepting at the bound itself gave 6 % more charts
+  // on those meshes, at 0.7 of it 2 %.
+  Early_verdict early_verdict(const Chart& c, const Chart_uv& uv) const
+  {
+    const Chart_distortion d = chart_distortion(m, c, uv);
+    const double e = excess(d);
+    if(e <= early_accepted_excess && d.meets(bound) && !too_concave(c, uv))
+      return Early_verdict::good_enough;
+    if(e * early_margin > 1. || (d.stretch_p95 - 1.) * early_margin > bound.max_stretch_p95 - 1.)
+      return Early_verdict::hopeless;
+    return Early_verdict::iterate_on;
+  }
+
+  // The early look of ARAP under this rule: none without a bound or
+  // without the fallback (every chart is then kept as it comes).
+  Arap_early_look early_look() const
+  {
+    if(!use_fallback || bound.is_unbounded())
+      return Arap_early_look();
+    return [this](const Chart& c, const Chart_uv& uv) { return early_verdict(c, uv); };
+  }
+  static constexpr double early_accepted_excess = 0.7;
+  static constexpr double early_margin = 0.7;
 
   // How far a chart is over the bounds on the means, per unit of 3D area
   // (0 when it is within them), from its excess() and 3D area. Distortion
@@ -747,6 +786,7 @@ Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, con
                                           Distortion_bound::convexity_area_fraction * m.total_common_area() };
   internal::Per_thread_splitter splitter(m);
   internal::Progress progress = internal::Progress::from(np);
+  const internal::Arap_early_look early_look = needs_split.early_look();
 
   std::vector<internal::Kept_chart> kept;
   // Why the requested method's chart of each patch as a whole was rejected.
@@ -787,7 +827,8 @@ Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, con
         accepted[i] = 1;
         return;
       }
-      outcomes[i] = internal::parameterize_chart(m, charts[i], method, use_fallback, needs_split.on_invalid_map());
+      outcomes[i] = internal::parameterize_chart(m, charts[i], method, use_fallback, needs_split.on_invalid_map(),
+                                                 early_look ? &early_look : nullptr);
       double excess = 0.;
       accepted[i] = (faces[i].size() == 1 || !needs_split(charts[i], outcomes[i], excess)) ? 1 : 0;
       if(!accepted[i] && outcomes[i].valid)

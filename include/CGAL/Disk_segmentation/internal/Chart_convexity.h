@@ -17,13 +17,13 @@ namespace CGAL {
 namespace Disk_segmentation {
 namespace internal {
 
-// UV area over the area of the UV convex hull, in (0, 1]; 1 for a layout
-// without area (nothing to pack).
-inline double chart_convexity(const Chart& c)
+// UV area over the area of the UV convex hull of chart `c` under the map
+// `uv`, in (0, 1]; 1 for a layout without area (nothing to pack).
+inline double chart_convexity(const Chart& c, const Chart_uv& uv)
 {
-  std::vector<Packing_point> points(c.uv.size()), hull;
-  for(std::size_t i = 0; i < c.uv.size(); ++i)
-    points[i] = { c.uv[i][0], c.uv[i][1] };
+  std::vector<Packing_point> points(uv.size()), hull;
+  for(std::size_t i = 0; i < uv.size(); ++i)
+    points[i] = { uv[i][0], uv[i][1] };
   double twice_area = 0.;
   for(const auto& t : c.triangles)
     twice_area += packing_cross(points[t[0]], points[t[1]], points[t[2]]);
@@ -35,6 +35,8 @@ inline double chart_convexity(const Chart& c)
     return 1.;
   return std::abs(twice_area) / twice_hull_area;
 }
+
+inline double chart_convexity(const Chart& c) { return chart_convexity(c, c.uv); }
 
 } // namespace internal
 } // namespace Disk_segmentation

@@ -39,7 +39,8 @@ struct Chart_distortion
   }
 };
 
-inline Chart_distortion chart_distortion(const Indexed_triangle_mesh& m, const Chart& c)
+// The distortion of `c` under the map `uv` (one UV per local vertex).
+inline Chart_distortion chart_distortion(const Indexed_triangle_mesh& m, const Chart& c, const Chart_uv& uv)
 {
   double area_3d = 0, area_uv = 0;
   std::vector<Triangle_jacobian> jacobians;
@@ -47,7 +48,7 @@ inline Chart_distortion chart_distortion(const Indexed_triangle_mesh& m, const C
   for(const auto& t : c.triangles)
   {
     jacobians.push_back(triangle_jacobian(m.points[c.vertices[t[0]]], m.points[c.vertices[t[1]]],
-                                          m.points[c.vertices[t[2]]], c.uv[t[0]], c.uv[t[1]], c.uv[t[2]]));
+                                          m.points[c.vertices[t[2]]], uv[t[0]], uv[t[1]], uv[t[2]]));
     area_3d += jacobians.back().area_3d;
     area_uv += jacobians.back().area_3d * jacobians.back().determinant;
   }
@@ -87,6 +88,11 @@ inline Chart_distortion chart_distortion(const Indexed_triangle_mesh& m, const C
     d.stretch_p95 = stretches[rank];
   }
   return d;
+}
+
+inline Chart_distortion chart_distortion(const Indexed_triangle_mesh& m, const Chart& c)
+{
+  return chart_distortion(m, c, c.uv);
 }
 
 } // namespace internal

@@ -100,6 +100,7 @@ std::size_t merge_kept_charts(const Indexed_triangle_mesh& m, Region_topology& t
       shared[label[g]][label[f]] += l;
     }
 
+  const Arap_early_look early_look = rule.early_look();
   typedef std::tuple<std::size_t, std::size_t, std::size_t, std::size_t> Tried;  // a, version, b, version
   std::set<Tried> tried;
   std::size_t merges = 0;
@@ -165,7 +166,7 @@ std::size_t merge_kept_charts(const Indexed_triangle_mesh& m, Region_topology& t
       // on the merges, the same charts on 10 meshes of CGAL's data.
       const Chart_uv start = glue_chart_maps(kept[round[i].first].chart, kept[round[i].second].chart, unions[i]);
       outcomes[i] = parameterize_chart_from(m, unions[i], method, use_fallback, start.empty() ? nullptr : &start,
-                                            rule.on_invalid_map());
+                                            rule.on_invalid_map(), early_look ? &early_look : nullptr);
       accepted[i] = rule(unions[i], outcomes[i], union_excess[i]) ? 0 : 1;
     });
 

@@ -28,6 +28,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -330,15 +331,42 @@ inline Chart_geometry chart_geometry(const Indexed_triangle_mesh& m, const Chart
   return Chart_geometry(std::move(points), std::move(triangles));
 }
 
+// What a look at an early ARAP iterate of a chart says of the iterations
+// left.
+enum class Early_verdict
+{
+  iterate_on,   // they are needed
+  good_enough,  // the iterate already meets what the chart must meet: stop there if it is valid
+  hopeless      // it is so far from it that they would not bring it there: stop
+};
+
+// Judges chart `c` under the ARAP iterate `uv` after
+// arap_early_look_iterations iterations (see Split_rule::early_verdict()).
+// Most charts that meet the bound after all iterations already meet it
+// there, and most that miss it by far already miss it by far.
+typedef std::function<Early_verdict(const Chart&, const Chart_uv&)> Arap_early_look;
+constexpr int arap_early_look_iterations = 2;
+
 // ARAP iterations on `c` from `start`. A valid start keeps only valid
 // iterates; an invalid one (LSCM folds some jagged charts, two glued maps
 // may fold along their seam) is iterated freely, which often unfolds it,
-// and kept only if the result is valid. Returns whether `c.uv` is now a
-// valid ARAP map; it is unchanged otherwise.
-inline bool arap_from(Chart& c, const std::vector<Index>& border_loop, const Chart_geometry& g, Chart_uv start)
+// and kept only if the result is valid. With `look`, the iterations may
+// end early (see Early_verdict). Returns whether `c.uv` is now a valid
+// ARAP map; it is unchanged otherwise.
+inline bool arap_from(Chart& c, const std::vector<Index>& border_loop, const Chart_geometry& g, Chart_uv start,
+                      const Arap_early_look* look = nullptr)
 {
   auto is_valid = [&](const Chart_uv& candidate) { return chart_uv_problem(c, candidate, border_loop).empty(); };
   auto any_map = [](const Chart_uv&) { return true; };
+  Early_verdict verdict = Early_verdict::iterate_on;
+  auto look_once = [&](int done, const Chart_uv& uv) {
+    if(look == nullptr || done != arap_early_look_iterations)
+      return false;
+    verdict = (*look)(c, uv);
+    if(verdict == Early_verdict::good_enough && !is_valid(uv))
+      verdict = Early_verdict::iterate_on;
+    return verdict != Early_verdict::iterate_on;
+  };
   if(is_valid(start))
   {
     // From a valid start the iterates nearly always stay valid, so only the
@@ -348,9 +376,9 @@ inline bool arap_from(Chart& c, const std::vector<Index>& border_loop, const Cha
     // no chart needed the second run, the same charts, parameterization
     // -7.5 % (a check costs about what an iteration does).
     Chart_uv unchecked = start;
-    if(local_global_arap(g, unchecked, arap_iterations, any_map) < 0)
+    if(local_global_arap(g, unchecked, arap_iterations, any_map, look_once) < 0)
       return false;
-    if(is_valid(unchecked))
+    if(verdict == Early_verdict::good_enough || is_valid(unchecked))
     {
       c.uv.swap(unchecked);
       return true;
@@ -360,11 +388,14 @@ inline bool arap_from(Chart& c, const std::vector<Index>& border_loop, const Cha
   }
   else
   {
-    if(local_global_arap(g, start, arap_iterations, any_map) < 0)
+    if(local_global_arap(g, start, arap_iterations, any_map, look_once) < 0)
       return false;
-    keep_winding(c, start);
-    if(!is_valid(start))
-      return false;
+    if(verdict != Early_verdict::good_enough)
+    {
+      keep_winding(c, start);
+      if(!is_valid(start))
+        return false;
+    }
   }
   c.uv.swap(start);
   return true;
@@ -374,7 +405,8 @@ inline bool arap_from(Chart& c, const std::vector<Index>& border_loop, const Cha
 // near its optimum and moves the border where a circle would have pinned
 // it. `border_loop` gets the chart's border (empty if the chart is not a
 // disk). Returns whether `c.uv` is a valid ARAP map.
-inline bool arap_from_lscm(const Indexed_triangle_mesh& m, Chart& c, std::vector<Index>& border_loop)
+inline bool arap_from_lscm(const Indexed_triangle_mesh& m, Chart& c, std::vector<Index>& border_loop,
+                           const Arap_early_look* look = nullptr)
 {
   border_loop = chart_border_loop(c);
   if(border_loop.empty() || m.at_one_point(c.faces))
@@ -384,7 +416,7 @@ inline bool arap_from_lscm(const Indexed_triangle_mesh& m, Chart& c, std::vector
   if(!free_border_lscm(g, std::vector<std::size_t>(border_loop.begin(), border_loop.end()), start))
     return false;
   keep_winding(c, start);
-  return arap_from(c, border_loop, g, std::move(start));
+  return arap_from(c, border_loop, g, std::move(start), look);
 }
 
 // What parameterize_chart() does when the requested method gives a chart of
@@ -396,19 +428,25 @@ enum class On_invalid_map
 };
 
 // Runs one method on the chart; returns an empty string on success, else
-// what went wrong. The UVs are left in `c.uv` in either case.
+// what went wrong. The UVs are left in `c.uv` in either case; `validated`
+// says whether they were found valid (ARAP checks its result).
 inline std::string parameterize_chart_with(const Indexed_triangle_mesh& m, Chart& c, Parameterization_method method,
-                                           std::vector<Index>& border_loop,
-                                           On_invalid_map on_invalid = On_invalid_map::redo)
+                                           std::vector<Index>& border_loop, bool& validated,
+                                           On_invalid_map on_invalid = On_invalid_map::redo,
+                                           const Arap_early_look* look = nullptr)
 {
+  validated = false;
   namespace SMP = CGAL::Surface_mesh_parameterization;
   typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_3 Point_3;
 
   c.uv.assign(c.vertices.size(), {{ 0., 0. }});
   if(method == Parameterization_method::ARAP && c.triangles.size() > 1)
   {
-    if(arap_from_lscm(m, c, border_loop))
+    if(arap_from_lscm(m, c, border_loop, look))
+    {
+      validated = true;
       return std::string();
+    }
     if(on_invalid == On_invalid_map::report)
       return "ARAP: the free-border LSCM start folds or overlaps and the iterations did not repair it";
   }
@@ -493,8 +531,11 @@ inline std::string parameterize_chart_with(const Indexed_triangle_mesh& m, Chart
       if(run_parameterizer(mesh, SMP::LSCM_parameterizer_3<Chart_mesh>(), border, c).empty())
       {
         keep_winding(c);
-        if(arap_from(c, border_loop, chart_geometry(m, c), c.uv))
+        if(arap_from(c, border_loop, chart_geometry(m, c), c.uv, look))
+        {
+          validated = true;
           return std::string();
+        }
       }
       // Then from an injective map on a circle, keeping only valid
       // iterates. Mean value coordinates start closer to ARAP; Tutte's map,
@@ -516,8 +557,9 @@ inline std::string parameterize_chart_with(const Indexed_triangle_mesh& m, Chart
         if(!problem.empty())
           return "ARAP: no valid initialization (" + problem + ")";
       }
-      if(!arap_from(c, border_loop, chart_geometry(m, c), c.uv))
+      if(!arap_from(c, border_loop, chart_geometry(m, c), c.uv, look))
         return "ARAP: cannot factor the cotangent Laplacian (degenerate triangles)";
+      validated = true;
       return std::string();
     }
     case Parameterization_method::MEAN_VALUE:
@@ -548,7 +590,8 @@ struct Chart_outcome
 // requested method from its first start only.
 inline Chart_outcome parameterize_chart(const Indexed_triangle_mesh& m, Chart& c,
                                         Parameterization_method requested, bool use_fallback,
-                                        On_invalid_map on_invalid = On_invalid_map::redo)
+                                        On_invalid_map on_invalid = On_invalid_map::redo,
+                                        const Arap_early_look* look = nullptr)
 {
   Chart_outcome outcome;
   std::vector<Index> border_loop;
@@ -563,9 +606,10 @@ inline Chart_outcome parameterize_chart(const Indexed_triangle_mesh& m, Chart& c
   // The fallback chain: at most three methods (requested, mean value, Tutte).
   for(std::size_t i = 0; i < chain.size(); ++i)
   {
-    std::string problem = parameterize_chart_with(m, c, chain[i], border_loop, on_invalid);
+    bool validated = false;
+    std::string problem = parameterize_chart_with(m, c, chain[i], border_loop, validated, on_invalid, look);
     bool error = !problem.empty();
-    if(problem.empty())
+    if(problem.empty() && !validated)
     {
       keep_winding(c);
       problem = chart_uv_problem(c, c.uv, border_loop);

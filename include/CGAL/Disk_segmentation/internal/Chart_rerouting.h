@@ -186,6 +186,7 @@ std::size_t reroute_kept_charts(const Indexed_triangle_mesh& m, Region_topology&
     // Giving arcs back may grow a chart past the size cap again.
     for(std::size_t j = 0; j < to_solve.size(); ++j)
       failed[j] = !rule.too_large(faces[j].size()) && topology.is_disk(faces[j]) ? 0 : 1;
+    const Arap_early_look early_look = rule.early_look();
     for_each(to_solve.size(), [&](std::size_t j) {
       if(failed[j])
         return;
@@ -194,7 +195,8 @@ std::size_t reroute_kept_charts(const Indexed_triangle_mesh& m, Region_topology&
       // From LSCM: the two former maps glued (as merges start) fold or
       // break the bound far more often (dino: 2 of 119 arcs kept, against
       // 20 from LSCM).
-      outcomes[i] = parameterize_chart(m, rerouted[i], method, use_fallback, rule.on_invalid_map());
+      outcomes[i] = parameterize_chart(m, rerouted[i], method, use_fallback, rule.on_invalid_map(),
+                                       early_look ? &early_look : nullptr);
       failed[j] = rule(rerouted[i], outcomes[i]) ? 1 : 0;
     });
     bool any = false;

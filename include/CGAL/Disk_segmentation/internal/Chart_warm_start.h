@@ -25,12 +25,13 @@ namespace internal {
 // parameterized chart: from its map restricted to them, local/global
 // iterations converge slowly, 30 iterations to reach the charts an LSCM
 // start gives in 10.) Returns whether `c.uv` is now a valid ARAP map.
-inline bool arap_from_start(const Indexed_triangle_mesh& m, Chart& c, Chart_uv start)
+inline bool arap_from_start(const Indexed_triangle_mesh& m, Chart& c, Chart_uv start,
+                            const Arap_early_look* look = nullptr)
 {
   if(c.triangles.size() < 2 || start.size() != c.vertices.size())
     return false;
   const std::vector<Index> border = chart_border_loop(c);
-  return !border.empty() && arap_from(c, border, chart_geometry(m, c), std::move(start));
+  return !border.empty() && arap_from(c, border, chart_geometry(m, c), std::move(start), look);
 }
 
 // parameterize_chart() for ARAP from a start map when one is given and
@@ -41,13 +42,14 @@ inline bool arap_from_start(const Indexed_triangle_mesh& m, Chart& c, Chart_uv s
 // redone from LSCM and none met the bound (0.19 of its 0.70 s).
 inline Chart_outcome parameterize_chart_from(const Indexed_triangle_mesh& m, Chart& c,
                                              Parameterization_method requested, bool use_fallback,
-                                             const Chart_uv* start, On_invalid_map on_invalid)
+                                             const Chart_uv* start, On_invalid_map on_invalid,
+                                             const Arap_early_look* look = nullptr)
 {
   if(start != nullptr && requested == Parameterization_method::ARAP && c.triangles.size() > 1)
   {
     Chart_outcome outcome;
     outcome.used = requested;
-    if(arap_from_start(m, c, *start))
+    if(arap_from_start(m, c, *start, look))
     {
       outcome.valid = true;
       return outcome;
@@ -59,7 +61,7 @@ inline Chart_outcome parameterize_chart_from(const Indexed_triangle_mesh& m, Cha
       return outcome;
     }
   }
-  return parameterize_chart(m, c, requested, use_fallback, on_invalid);
+  return parameterize_chart(m, c, requested, use_fallback, on_invalid, look);
 }
 
 // A start map for the union `u` of two parameterized charts `a` and `b`

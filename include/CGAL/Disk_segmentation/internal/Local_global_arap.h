@@ -328,11 +328,13 @@ struct Chart_geometry
 // `is_acceptable(uv)` vets every iterate; a rejected one is replaced by a
 // shorter step from the last valid iterate, and the iterations stop when no
 // step is accepted. From a valid start (e.g. mean value coordinates) the
-// result is therefore always valid. Returns the number of iterations done,
-// or -1 if the factorization fails (degenerate triangles).
-template <typename Acceptance>
+// result is therefore always valid. `stop_after(k, uv)`, called on the k-th
+// accepted iterate, ends the iterations when it returns true. Returns the
+// number of iterations done, or -1 if the factorization fails (degenerate
+// triangles).
+template <typename Acceptance, typename Stop>
 int local_global_arap(const Chart_geometry& g, std::vector<std::array<double, 2> >& uv, int iterations,
-                      const Acceptance& is_acceptable)
+                      const Acceptance& is_acceptable, const Stop& stop_after)
 {
   const std::vector<std::array<double, 3> >& points = g.points;
   const std::vector<std::array<std::size_t, 3> >& triangles = g.triangles;
@@ -437,8 +439,18 @@ int local_global_arap(const Chart_geometry& g, std::vector<std::array<double, 2>
         uv[i] = {{ previous[i][0] + step * (x[unknown(i)][0] - previous[i][0]),
                    previous[i][1] + step * (x[unknown(i)][1] - previous[i][1]) }};
     }
+    if(stop_after(iteration + 1, static_cast<const std::vector<std::array<double, 2> >&>(uv)))
+      return iteration + 1;
   }
   return iterations;
+}
+
+template <typename Acceptance>
+int local_global_arap(const Chart_geometry& g, std::vector<std::array<double, 2> >& uv, int iterations,
+                      const Acceptance& is_acceptable)
+{
+  return local_global_arap(g, uv, iterations, is_acceptable,
+                           [](int, const std::vector<std::array<double, 2> >&) { return false; });
 }
 
 } // namespace internal
