@@ -1111,17 +1111,21 @@ TEST(Atlas, ArapEndsItsIterationsWhereTheEarlyLookSays)
   {
     int looks = 0;
     double seen = -1.;
-    const DS::internal::Arap_early_look look = [&](const DS::internal::Chart&, const DS::internal::Chart_uv& uv) {
+    const DS::internal::Arap_early_look judge = [&](const DS::internal::Chart&, const DS::internal::Chart_uv& uv) {
       ++looks;
       seen = distance(uv, after_early);
-      return verdict;
+      return DS::internal::Early_judgement{ verdict, 42. };
     };
+    DS::internal::Early_look look{ &judge, DS::internal::Early_judgement() };
     DS::internal::Chart run = c;
     ASSERT_TRUE(DS::internal::arap_from(run, border, g, start, &look));
     EXPECT_EQ(looks, 1);
     EXPECT_LT(seen, 1e-9);
     const DS::internal::Chart_uv& expected = verdict == DS::internal::Early_verdict::iterate_on ? after_all : after_early;
     EXPECT_LT(distance(run.uv, expected), 1e-9) << "verdict " << int(verdict);
+    // The judgement is handed back only when the chart ends on the judged map.
+    EXPECT_EQ(look.ended.verdict, verdict);
+    EXPECT_EQ(look.ended.measure, verdict == DS::internal::Early_verdict::iterate_on ? 0. : 42.);
   }
 }
 
@@ -1144,14 +1148,16 @@ TEST(Atlas, TheEarlyVerdictOfTheSplitRuleFollowsTheBound)
     stretched[i] = {{ 1.5 * q[0], q[1] }};
   }
   const DS::internal::Split_rule rule{ p.m, DS::Distortion_bound(), DS::default_max_chart_faces, true };
-  EXPECT_EQ(rule.early_verdict(c, flat), DS::internal::Early_verdict::good_enough);
-  EXPECT_EQ(rule.early_verdict(c, stretched), DS::internal::Early_verdict::hopeless);
+  EXPECT_EQ(rule.early_verdict(c, flat).verdict, DS::internal::Early_verdict::good_enough);
+  EXPECT_EQ(rule.early_verdict(c, stretched).verdict, DS::internal::Early_verdict::hopeless);
+  EXPECT_NEAR(rule.early_verdict(c, stretched).measure, std::log(1.5) / DS::Distortion_bound().max_angle_distortion,
+              1e-9);
   DS::Distortion_bound loose;
   loose.max_angle_distortion = 0.5;
   loose.max_area_distortion = 1.;
   loose.max_stretch_p95 = 2.;
   const DS::internal::Split_rule loose_rule{ p.m, loose, DS::default_max_chart_faces, true };
-  EXPECT_EQ(loose_rule.early_verdict(c, stretched), DS::internal::Early_verdict::iterate_on);
+  EXPECT_EQ(loose_rule.early_verdict(c, stretched).verdict, DS::internal::Early_verdict::iterate_on);
   // No look without a bound or without the fallback.
   const DS::internal::Split_rule unbounded_rule{ p.m, DS::Distortion_bound::unbounded(), DS::default_max_chart_faces,
                                                  true };

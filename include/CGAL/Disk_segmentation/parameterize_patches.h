@@ -349,10 +349,10 @@ void split_and_parameterize(const Indexed_triangle_mesh& m, Splitter& splitter, 
         outcomes.push_back(outcome);
         continue;
       }
-      outcome = parameterize_chart(m, c, requested, use_fallback, needs_split.on_invalid_map(),
-                                   early_look ? &early_look : nullptr);
+      Early_look look{ &early_look, Early_judgement() };
+      outcome = parameterize_chart(m, c, requested, use_fallback, needs_split.on_invalid_map(), &look);
       double excess = 0.;
-      if(task.faces.size() == 1 || !needs_split(c, outcome, excess))
+      if(task.faces.size() == 1 || !needs_split(c, outcome, excess, look.ended))
       {
         pieces.push_back(std::move(c));
         outcomes.push_back(outcome);
@@ -478,7 +478,11 @@ struct Split_rule
 
   // The same, measuring the chart once: `measured_excess` gets its
   // excess() when it was measured (a valid chart under a bound), else 0.
-  bool operator()(const Chart& c, const Chart_outcome& outcome, double& measured_excess) const
+  // A chart whose ARAP iterations the early look ended (`ended`, see
+  // Early_look) is not measured again: the judgement was drawn from the
+  // map it has.
+  bool operator()(const Chart& c, const Chart_outcome& outcome, double& measured_excess,
+                  const Early_judgement& ended = Early_judgement()) const
   {
     measured_excess = 0.;
     if(!use_fallback)
@@ -487,6 +491,11 @@ struct Split_rule
       return true;
     if(bound.is_unbounded())
       return false;
+    if(ended.verdict != Early_verdict::iterate_on)
+    {
+      measured_excess = ended.measure;
+      return ended.verdict == Early_verdict::hopeless;
+    }
     const Chart_distortion d = chart_distortion(m, c);
     measured_excess = excess(d);
     return !d.meets(bound) || too_concave(c);
@@ -517,15 +526,19 @@ struct Split_rule
   // (mean distortions about 5 % higher), which leaves less room to merge it
   // with its neighbors: accepting at the bound itself gave 6 % more charts
   // on those meshes, at 0.7 of it 2 %.
-  Early_verdict early_verdict(const Chart& c, const Chart_uv& uv) const
+  // A good enough chart meets the bound and a hopeless one does not (both
+  // its mean excess and its 95th percentile say so), so the judgement
+  // stands for the chart's test above; its measure is excess(d).
+  Early_judgement early_verdict(const Chart& c, const Chart_uv& uv) const
   {
     const Chart_distortion d = chart_distortion(m, c, uv);
-    const double e = excess(d);
-    if(e <= early_accepted_excess && d.meets(bound) && !too_concave(c, uv))
-      return Early_verdict::good_enough;
-    if(e * early_margin > 1. || (d.stretch_p95 - 1.) * early_margin > bound.max_stretch_p95 - 1.)
-      return Early_verdict::hopeless;
-    return Early_verdict::iterate_on;
+    Early_judgement j;
+    j.measure = excess(d);
+    if(j.measure <= early_accepted_excess && d.meets(bound) && !too_concave(c, uv))
+      j.verdict = Early_verdict::good_enough;
+    else if(j.measure * early_margin > 1. || (d.stretch_p95 - 1.) * early_margin > bound.max_stretch_p95 - 1.)
+      j.verdict = Early_verdict::hopeless;
+    return j;
   }
 
   // The early look of ARAP under this rule: none without a bound or
@@ -827,10 +840,10 @@ Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, con
         accepted[i] = 1;
         return;
       }
-      outcomes[i] = internal::parameterize_chart(m, charts[i], method, use_fallback, needs_split.on_invalid_map(),
-                                                 early_look ? &early_look : nullptr);
+      internal::Early_look look{ &early_look, internal::Early_judgement() };
+      outcomes[i] = internal::parameterize_chart(m, charts[i], method, use_fallback, needs_split.on_invalid_map(), &look);
       double excess = 0.;
-      accepted[i] = (faces[i].size() == 1 || !needs_split(charts[i], outcomes[i], excess)) ? 1 : 0;
+      accepted[i] = (faces[i].size() == 1 || !needs_split(charts[i], outcomes[i], excess, look.ended)) ? 1 : 0;
       if(!accepted[i] && outcomes[i].valid)
       {
         wave[i].excess_density = needs_split.excess_density(excess, area);

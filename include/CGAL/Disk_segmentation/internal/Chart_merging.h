@@ -165,9 +165,10 @@ std::size_t merge_kept_charts(const Indexed_triangle_mesh& m, Region_topology& t
       // ARAP from the two maps glued rather than from LSCM: half the time
       // on the merges, the same charts on 10 meshes of CGAL's data.
       const Chart_uv start = glue_chart_maps(kept[round[i].first].chart, kept[round[i].second].chart, unions[i]);
+      Early_look look{ &early_look, Early_judgement() };
       outcomes[i] = parameterize_chart_from(m, unions[i], method, use_fallback, start.empty() ? nullptr : &start,
-                                            rule.on_invalid_map(), early_look ? &early_look : nullptr);
-      accepted[i] = rule(unions[i], outcomes[i], union_excess[i]) ? 0 : 1;
+                                            rule.on_invalid_map(), &look);
+      accepted[i] = rule(unions[i], outcomes[i], union_excess[i], look.ended) ? 0 : 1;
     });
 
     for(std::size_t i = 0; i < round.size(); ++i)

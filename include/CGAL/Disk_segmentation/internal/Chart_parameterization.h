@@ -30,7 +30,6 @@
 #include <cmath>
 #include <functional>
 #include <string>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -48,24 +47,44 @@ struct Chart
   std::vector<std::array<double, 2> > uv;       // local vertex -> UV
 };
 
+// Local vertices are numbered as first met, through a per-thread slot per
+// mesh vertex (a hash map was 1 % of the time), left all no_index.
 inline Chart make_chart(const Indexed_triangle_mesh& m, const std::vector<Index>& faces)
 {
+  thread_local std::vector<Index> slot;
+  if(slot.size() < m.number_of_vertices())
+    slot.assign(m.number_of_vertices(), no_index);
   Chart c;
-  c.faces = faces;
-  std::unordered_map<Index, Index> local;
-  local.reserve(2 * faces.size());
-  for(Index f : faces)
+  auto clear_slots = [&] {
+    for(Index v : c.vertices)
+      slot[v] = no_index;
+  };
+  try
   {
-    std::array<Index, 3> t;
-    for(int i = 0; i < 3; ++i)
+    c.faces = faces;
+    c.triangles.reserve(faces.size());
+    for(Index f : faces)
     {
-      const auto ins = local.emplace(m.corners[f][i], static_cast<Index>(c.vertices.size()));
-      if(ins.second)
-        c.vertices.push_back(m.corners[f][i]);
-      t[i] = ins.first->second;
+      std::array<Index, 3> t;
+      for(int i = 0; i < 3; ++i)
+      {
+        const Index v = m.corners[f][i];
+        if(slot[v] == no_index)
+        {
+          c.vertices.push_back(v);
+          slot[v] = static_cast<Index>(c.vertices.size() - 1);
+        }
+        t[i] = slot[v];
+      }
+      c.triangles.push_back(t);
     }
-    c.triangles.push_back(t);
   }
+  catch(...)
+  {
+    clear_slots();
+    throw;
+  }
+  clear_slots();
   return c;
 }
 
@@ -340,12 +359,29 @@ enum class Early_verdict
   hopeless      // it is so far from it that they would not bring it there: stop
 };
 
+// A verdict, with the measure it was drawn from (Split_rule: the chart's
+// excess), so that the chart need not be measured again.
+struct Early_judgement
+{
+  Early_verdict verdict = Early_verdict::iterate_on;
+  double measure = 0.;
+};
+
 // Judges chart `c` under the ARAP iterate `uv` after
 // arap_early_look_iterations iterations (see Split_rule::early_verdict()).
 // Most charts that meet the bound after all iterations already meet it
 // there, and most that miss it by far already miss it by far.
-typedef std::function<Early_verdict(const Chart&, const Chart_uv&)> Arap_early_look;
+typedef std::function<Early_judgement(const Chart&, const Chart_uv&)> Arap_early_look;
 constexpr int arap_early_look_iterations = 2;
+
+// The early look of one chart's parameterization: the judge (none: all
+// iterations), and its judgement of the map the chart ends with when the
+// look ended the iterations on it (else `iterate_on`).
+struct Early_look
+{
+  const Arap_early_look* judge = nullptr;
+  Early_judgement ended;
+};
 
 // ARAP iterations on `c` from `start`. A valid start keeps only valid
 // iterates; an invalid one (LSCM folds some jagged charts, two glued maps
@@ -354,18 +390,27 @@ constexpr int arap_early_look_iterations = 2;
 // end early (see Early_verdict). Returns whether `c.uv` is now a valid
 // ARAP map; it is unchanged otherwise.
 inline bool arap_from(Chart& c, const std::vector<Index>& border_loop, const Chart_geometry& g, Chart_uv start,
-                      const Arap_early_look* look = nullptr)
+                      Early_look* look = nullptr)
 {
   auto is_valid = [&](const Chart_uv& candidate) { return chart_uv_problem(c, candidate, border_loop).empty(); };
   auto any_map = [](const Chart_uv&) { return true; };
-  Early_verdict verdict = Early_verdict::iterate_on;
+  Early_judgement judgement;
+  if(look != nullptr)
+    look->ended = Early_judgement();
   auto look_once = [&](int done, const Chart_uv& uv) {
-    if(look == nullptr || done != arap_early_look_iterations)
+    if(look == nullptr || look->judge == nullptr || !*look->judge || done != arap_early_look_iterations)
       return false;
-    verdict = (*look)(c, uv);
-    if(verdict == Early_verdict::good_enough && !is_valid(uv))
-      verdict = Early_verdict::iterate_on;
-    return verdict != Early_verdict::iterate_on;
+    judgement = (*look->judge)(c, uv);
+    if(judgement.verdict == Early_verdict::good_enough && !is_valid(uv))
+      judgement.verdict = Early_verdict::iterate_on;
+    return judgement.verdict != Early_verdict::iterate_on;
+  };
+  const Early_verdict& verdict = judgement.verdict;
+  // Called when the chart ends with the last iterate, unchanged: the
+  // judged one if the look ended the iterations.
+  auto ended_on_judged = [&] {
+    if(look != nullptr && judgement.verdict != Early_verdict::iterate_on)
+      look->ended = judgement;
   };
   if(is_valid(start))
   {
@@ -381,6 +426,7 @@ inline bool arap_from(Chart& c, const std::vector<Index>& border_loop, const Cha
     if(verdict == Early_verdict::good_enough || is_valid(unchecked))
     {
       c.uv.swap(unchecked);
+      ended_on_judged();
       return true;
     }
     if(local_global_arap(g, start, arap_iterations, is_valid) < 0)
@@ -396,6 +442,8 @@ inline bool arap_from(Chart& c, const std::vector<Index>& border_loop, const Cha
       if(!is_valid(start))
         return false;
     }
+    else
+      ended_on_judged();
   }
   c.uv.swap(start);
   return true;
@@ -406,7 +454,7 @@ inline bool arap_from(Chart& c, const std::vector<Index>& border_loop, const Cha
 // it. `border_loop` gets the chart's border (empty if the chart is not a
 // disk). Returns whether `c.uv` is a valid ARAP map.
 inline bool arap_from_lscm(const Indexed_triangle_mesh& m, Chart& c, std::vector<Index>& border_loop,
-                           const Arap_early_look* look = nullptr)
+                           Early_look* look = nullptr)
 {
   border_loop = chart_border_loop(c);
   if(border_loop.empty() || m.at_one_point(c.faces))
@@ -433,7 +481,7 @@ enum class On_invalid_map
 inline std::string parameterize_chart_with(const Indexed_triangle_mesh& m, Chart& c, Parameterization_method method,
                                            std::vector<Index>& border_loop, bool& validated,
                                            On_invalid_map on_invalid = On_invalid_map::redo,
-                                           const Arap_early_look* look = nullptr)
+                                           Early_look* look = nullptr)
 {
   validated = false;
   namespace SMP = CGAL::Surface_mesh_parameterization;
@@ -591,7 +639,7 @@ struct Chart_outcome
 inline Chart_outcome parameterize_chart(const Indexed_triangle_mesh& m, Chart& c,
                                         Parameterization_method requested, bool use_fallback,
                                         On_invalid_map on_invalid = On_invalid_map::redo,
-                                        const Arap_early_look* look = nullptr)
+                                        Early_look* look = nullptr)
 {
   Chart_outcome outcome;
   std::vector<Index> border_loop;

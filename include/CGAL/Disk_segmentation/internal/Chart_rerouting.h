@@ -195,9 +195,10 @@ std::size_t reroute_kept_charts(const Indexed_triangle_mesh& m, Region_topology&
       // From LSCM: the two former maps glued (as merges start) fold or
       // break the bound far more often (dino: 2 of 119 arcs kept, against
       // 20 from LSCM).
-      outcomes[i] = parameterize_chart(m, rerouted[i], method, use_fallback, rule.on_invalid_map(),
-                                       early_look ? &early_look : nullptr);
-      failed[j] = rule(rerouted[i], outcomes[i]) ? 1 : 0;
+      Early_look look{ &early_look, Early_judgement() };
+      outcomes[i] = parameterize_chart(m, rerouted[i], method, use_fallback, rule.on_invalid_map(), &look);
+      double excess = 0.;
+      failed[j] = rule(rerouted[i], outcomes[i], excess, look.ended) ? 1 : 0;
     });
     bool any = false;
     for(std::size_t j = 0; j < to_solve.size(); ++j)

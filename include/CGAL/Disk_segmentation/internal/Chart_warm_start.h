@@ -26,7 +26,7 @@ namespace internal {
 // iterations converge slowly, 30 iterations to reach the charts an LSCM
 // start gives in 10.) Returns whether `c.uv` is now a valid ARAP map.
 inline bool arap_from_start(const Indexed_triangle_mesh& m, Chart& c, Chart_uv start,
-                            const Arap_early_look* look = nullptr)
+                            Early_look* look = nullptr)
 {
   if(c.triangles.size() < 2 || start.size() != c.vertices.size())
     return false;
@@ -43,7 +43,7 @@ inline bool arap_from_start(const Indexed_triangle_mesh& m, Chart& c, Chart_uv s
 inline Chart_outcome parameterize_chart_from(const Indexed_triangle_mesh& m, Chart& c,
                                              Parameterization_method requested, bool use_fallback,
                                              const Chart_uv* start, On_invalid_map on_invalid,
-                                             const Arap_early_look* look = nullptr)
+                                             Early_look* look = nullptr)
 {
   if(start != nullptr && requested == Parameterization_method::ARAP && c.triangles.size() > 1)
   {
