@@ -147,12 +147,16 @@ private:
     Placement best;
     for(long x = 0; x + width <= side; ++x)
     {
+      // A position whose top is already above the square or above the
+      // best score (the waste below only adds to it) cannot win: its
+      // columns are not all read.
+      const long ceiling = (std::min)(side, best.score) - p.height;
       long y = 0;
-      for(long c = 0; c < width; ++c)
+      for(long c = 0; c < width && y <= ceiling; ++c)
         y = (std::max)(y, skyline_[x + c] - p.low[c]);
-      const long top = y + p.height;
-      if(top > side)
+      if(y > ceiling)
         continue;
+      const long top = y + p.height;
       // The cells left empty below the chart, at a small weight: enough
       // to prefer a dent the chart fits, not to climb for it.
       long waste = 0;
