@@ -1049,6 +1049,14 @@ void make_planar_chart(Disk_chart& p)
   make_disk_chart(p, [](double, double) { return 0.; });
 }
 
+// The chart of all of the disk's faces.
+DS::internal::Chart whole_chart(const Disk_chart& p)
+{
+  std::vector<DS::internal::Index> all(p.m.number_of_faces());
+  for(DS::internal::Index f = 0; f < all.size(); ++f) all[f] = f;
+  return DS::internal::make_chart(p.m, all);
+}
+
 } // namespace
 
 TEST(Atlas, FreeBorderLscmAndArapKeepAPlanarChartUpToASimilarity)
@@ -1057,9 +1065,7 @@ TEST(Atlas, FreeBorderLscmAndArapKeepAPlanarChartUpToASimilarity)
   // find it up to a similarity, and ARAP from it must keep it.
   Disk_chart p;
   make_planar_chart(p);
-  std::vector<DS::internal::Index> all(p.m.number_of_faces());
-  for(DS::internal::Index f = 0; f < all.size(); ++f) all[f] = f;
-  DS::internal::Chart c = DS::internal::make_chart(p.m, all);
+  DS::internal::Chart c = whole_chart(p);
   const std::vector<DS::internal::Index> border = DS::internal::chart_border_loop(c);
   ASSERT_EQ(border.size(), 12u);
   const DS::internal::Chart_geometry g = DS::internal::chart_geometry(p.m, c);
@@ -1080,9 +1086,7 @@ TEST(Atlas, ArapEndsItsIterationsWhereTheEarlyLookSays)
   // count, each compared with plain iterations run here for that count.
   Disk_chart p;
   make_disk_chart(p, [](double x, double y) { return 0.3 * (x * x - y * y) + 0.2 * std::exp(-4. * (x * x + y * y)); });
-  std::vector<DS::internal::Index> all(p.m.number_of_faces());
-  for(DS::internal::Index f = 0; f < all.size(); ++f) all[f] = f;
-  const DS::internal::Chart c = DS::internal::make_chart(p.m, all);
+  const DS::internal::Chart c = whole_chart(p);
   const std::vector<DS::internal::Index> border = DS::internal::chart_border_loop(c);
   ASSERT_FALSE(border.empty());
   const DS::internal::Chart_geometry g = DS::internal::chart_geometry(p.m, c);
@@ -1137,9 +1141,7 @@ TEST(Atlas, TheEarlyVerdictOfTheSplitRuleFollowsTheBound)
   // Under a looser angle bound of 0.5 it is neither.
   Disk_chart p;
   make_planar_chart(p);
-  std::vector<DS::internal::Index> all(p.m.number_of_faces());
-  for(DS::internal::Index f = 0; f < all.size(); ++f) all[f] = f;
-  const DS::internal::Chart c = DS::internal::make_chart(p.m, all);
+  const DS::internal::Chart c = whole_chart(p);
   DS::internal::Chart_uv flat(c.vertices.size()), stretched(c.vertices.size());
   for(std::size_t i = 0; i < c.vertices.size(); ++i)
   {
@@ -1180,9 +1182,7 @@ TEST(Atlas, FreeBorderLscmIsStationaryForTheConformalEnergyOnACurvedChart)
   Disk_chart p;
   make_disk_chart(p, [](double x, double y) { return 0.3 * (x * x - y * y) + 0.2 * std::exp(-4. * (x * x + y * y)); });
   const DS::internal::Indexed_triangle_mesh& m = p.m;
-  std::vector<DS::internal::Index> all(m.number_of_faces());
-  for(DS::internal::Index f = 0; f < all.size(); ++f) all[f] = f;
-  const DS::internal::Chart c = DS::internal::make_chart(m, all);
+  const DS::internal::Chart c = whole_chart(p);
   const std::vector<DS::internal::Index> border = DS::internal::chart_border_loop(c);
   ASSERT_FALSE(border.empty());
   const DS::internal::Chart_geometry g = DS::internal::chart_geometry(m, c);
@@ -1293,9 +1293,7 @@ TEST(Atlas, ChartEdgesListEveryEdgeOnceAroundBothEnds)
   // once, in increasing order, with the edge that joins them.
   Disk_chart p;
   make_planar_chart(p);
-  std::vector<DS::internal::Index> all(p.m.number_of_faces());
-  for(DS::internal::Index f = 0; f < all.size(); ++f) all[f] = f;
-  const DS::internal::Chart c = DS::internal::make_chart(p.m, all);
+  const DS::internal::Chart c = whole_chart(p);
   const DS::internal::Chart_geometry g = DS::internal::chart_geometry(p.m, c);
   const DS::internal::Chart_edges& edges = g.edges;
   std::map<std::pair<std::size_t, std::size_t>, std::size_t> sides;  // -> how many triangles have it
