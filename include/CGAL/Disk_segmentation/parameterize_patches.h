@@ -470,10 +470,11 @@ struct Split_rule
     return use_fallback && !bound.is_unbounded() ? On_invalid_map::report : On_invalid_map::redo;
   }
 
-  bool operator()(const Chart& c, const Chart_outcome& outcome) const
+  bool operator()(const Chart& c, const Chart_outcome& outcome,
+                  const Early_judgement& ended = Early_judgement()) const
   {
     double measured;
-    return (*this)(c, outcome, measured);
+    return (*this)(c, outcome, measured, ended);
   }
 
   // The same, measuring the chart once: `measured_excess` gets its
@@ -498,10 +499,16 @@ struct Split_rule
     }
     const Chart_distortion d = chart_distortion(m, c);
     measured_excess = excess(d);
-    return !d.meets(bound) || too_concave(c);
+    return breaks_bound(c, c.uv, d);
   }
 
-  bool too_concave(const Chart& c) const { return too_concave(c, c.uv); }
+  // Whether chart `c` under the map `uv`, of distortion `d`, breaks the
+  // bound or the convexity bound: the test of a parameterized chart, and
+  // of an early ARAP iterate.
+  bool breaks_bound(const Chart& c, const Chart_uv& uv, const Chart_distortion& d) const
+  {
+    return !d.meets(bound) || too_concave(c, uv);
+  }
 
   bool too_concave(const Chart& c, const Chart_uv& uv) const
   {
@@ -526,6 +533,7 @@ struct Split_rule
   // (mean distortions about 5 % higher), which leaves less room to merge it
   // with its neighbors: accepting at the bound itself gave 6 % more charts
   // on those meshes, at 0.7 of it 2 %.
+  //
   // A good enough chart meets the bound and a hopeless one does not (both
   // its mean excess and its 95th percentile say so), so the judgement
   // stands for the chart's test above; its measure is excess(d).
@@ -534,7 +542,7 @@ struct Split_rule
     const Chart_distortion d = chart_distortion(m, c, uv);
     Early_judgement j;
     j.measure = excess(d);
-    if(j.measure <= early_accepted_excess && d.meets(bound) && !too_concave(c, uv))
+    if(j.measure <= early_accepted_excess && !breaks_bound(c, uv, d))
       j.verdict = Early_verdict::good_enough;
     else if(j.measure * early_margin > 1. || (d.stretch_p95 - 1.) * early_margin > bound.max_stretch_p95 - 1.)
       j.verdict = Early_verdict::hopeless;

@@ -36,8 +36,6 @@ inline double chart_convexity(const Chart& c, const Chart_uv& uv)
   return std::abs(twice_area) / twice_hull_area;
 }
 
-inline double chart_convexity(const Chart& c) { return chart_convexity(c, c.uv); }
-
 } // namespace internal
 } // namespace Disk_segmentation
 } // namespace CGAL

@@ -197,8 +197,7 @@ std::size_t reroute_kept_charts(const Indexed_triangle_mesh& m, Region_topology&
       // 20 from LSCM).
       Early_look look{ &early_look, Early_judgement() };
       outcomes[i] = parameterize_chart(m, rerouted[i], method, use_fallback, rule.on_invalid_map(), &look);
-      double excess = 0.;
-      failed[j] = rule(rerouted[i], outcomes[i], excess, look.ended) ? 1 : 0;
+      failed[j] = rule(rerouted[i], outcomes[i], look.ended) ? 1 : 0;
     });
     bool any = false;
     for(std::size_t j = 0; j < to_solve.size(); ++j)
