@@ -174,8 +174,8 @@ int main(int argc, char** argv)
   app.add_option("--max-stretch-p95", bound.max_stretch_p95,
                  "largest 95th percentile of s1/s2 over a chart's triangles (inf: no bound)")->capture_default_str();
   app.add_option("--min-convexity", bound.min_convexity,
-                 "smallest UV area / UV convex hull area of a chart holding 3% of the mesh's area or more "
-                 "(0: no bound; packs tighter)")->capture_default_str();
+                 "smallest UV area / UV convex hull area of a chart holding 3% of the mesh's area or more, "
+                 "0.8 times it for smaller charts (0: no bound; packs tighter)")->capture_default_str();
   app.add_flag("--unbounded", unbounded,
                "no distortion or convexity bound: the paper's charts (only invalid ones are redone or split)");
   app.add_flag("--rough-borders", rough_borders,

@@ -97,7 +97,8 @@ def atlas(vertices, faces, method=_disk_uv.default_parameterization_method,
         max_angle_distortion, max_area_distortion, max_stretch, max_area_scale,
         max_stretch_p95: the distortion bound every chart meets (see the manual).
         min_convexity: smallest UV area / UV convex hull area of a chart
-            holding 3% of the mesh's area or more (0: no bound).
+            holding 3% of the mesh's area or more, 0.8 times it for smaller
+            charts (0: no bound).
         unbounded: no distortion or convexity bound (the paper's charts).
         rough_borders: keep the saw-toothed chart borders of the paper (neither smoothed nor straightened).
         resolution, padding: texture side and gap between charts, in texels.

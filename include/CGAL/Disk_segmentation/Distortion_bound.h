@@ -34,10 +34,11 @@ namespace Disk_segmentation {
 /// One field bounds a chart's shape rather than its distortion (ours, not
 /// in the paper): `min_convexity` bounds from below the ratio of a chart's
 /// UV area to the area of the convex hull of its UV layout, for every chart
-/// holding at least `convexity_area_fraction` of the mesh's 3D area. A
-/// bent or branching chart leaves room inside its hull that no other chart
-/// fills, which is what keeps the atlas from packing tightly (see
-/// \ref DS_Bound in the user manual); splitting it costs a little cut length.
+/// holding at least `convexity_area_fraction` of the mesh's 3D area, and
+/// `small_chart_convexity_ratio` times it for the smaller charts. A bent or
+/// branching chart leaves room inside its hull that no other chart fills,
+/// which is what keeps the atlas from packing tightly (see \ref DS_Bound in
+/// the user manual).
 ///
 /// A single triangle is laid out isometrically and is convex, so it meets
 /// every bound: splitting always ends. The defaults were chosen by comparing bounds on
@@ -56,12 +57,25 @@ struct Distortion_bound
   /// Largest 95th percentile of \f$ s_1/s_2 \f$ over a chart's triangles.
   double max_stretch_p95 = 1.15;
   /// Smallest UV area / UV convex hull area of a chart holding at least
-  /// `convexity_area_fraction` of the mesh's 3D area (0: no bound).
+  /// `convexity_area_fraction` of the mesh's 3D area; smaller charts are
+  /// held to `small_chart_convexity_ratio` times it (0: no bound).
   double min_convexity = 0.8;
 
-  /// Charts below this fraction of the mesh's 3D area are not bound by
-  /// `min_convexity`: they fill the holes between larger ones.
+  /// Charts below this fraction of the mesh's 3D area are held to a lower
+  /// convexity: they fill the holes between larger ones.
   static constexpr double convexity_area_fraction = 0.03;
+  /// The convexity a chart below `convexity_area_fraction` of the area
+  /// must reach, as a fraction of `min_convexity`. Small charts free of any
+  /// convexity bound merged into branching shapes (thin strips unfolded
+  /// from the faces of a CAD part), which cost seams and packing.
+  static constexpr double small_chart_convexity_ratio = 0.8;
+
+  /// The convexity a chart of `area_fraction` of the mesh's 3D area must
+  /// reach (0: none).
+  double min_convexity_of(double area_fraction) const
+  {
+    return area_fraction >= convexity_area_fraction ? min_convexity : small_chart_convexity_ratio * min_convexity;
+  }
 
   /// No bound: every valid chart is kept (the paper's behaviour).
   static Distortion_bound unbounded()

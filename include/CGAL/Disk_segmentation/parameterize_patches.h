@@ -456,7 +456,7 @@ struct Split_rule
   bool use_fallback;
   const Border_smoother* smoother = nullptr;  // smooths the borders between pieces, if not null
   const Interior_curvature* curvature = nullptr;  // predicts charts too curved to meet the bound, if not null
-  double smallest_bound_convex_area = 0.;  // common_area() from which bound.min_convexity applies
+  double total_area = 0.;  // of the mesh, in common_area() units
 
   bool too_large(std::size_t faces) const { return faces > max_chart_faces; }
 
@@ -517,7 +517,7 @@ struct Split_rule
     double area = 0.;
     for(Index f : c.faces)
       area += m.common_area(f);
-    return area >= smallest_bound_convex_area && chart_convexity(c, uv) < bound.min_convexity;
+    return chart_convexity(c, uv) < bound.min_convexity_of(area / total_area);
   }
 
   // Whether the ARAP iterations of a chart may end early (see
@@ -804,7 +804,7 @@ Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, con
     curvature.reset(new internal::Interior_curvature(m));
   const internal::Split_rule needs_split{ m, settings.bound, settings.max_chart_faces, use_fallback,
                                           settings.smooth_borders ? &smoother : nullptr, curvature.get(),
-                                          Distortion_bound::convexity_area_fraction * m.total_common_area() };
+                                          m.total_common_area() };
   internal::Per_thread_splitter splitter(m);
   internal::Progress progress = internal::Progress::from(np);
   const internal::Arap_early_look early_look = needs_split.early_look();
