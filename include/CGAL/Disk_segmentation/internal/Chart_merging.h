@@ -165,6 +165,8 @@ std::size_t merge_kept_charts(const Indexed_triangle_mesh& m, Region_topology& t
       // ARAP from the two maps glued rather than from LSCM: half the time
       // on the merges, the same charts on 10 meshes of CGAL's data.
       const Chart_uv start = glue_chart_maps(kept[round[i].first].chart, kept[round[i].second].chart, unions[i]);
+      if(!start.empty() && rule.glued_too_concave(unions[i], start))
+        return;
       Early_look look{ &early_look, Early_judgement() };
       outcomes[i] = parameterize_chart_from(m, unions[i], method, use_fallback, start.empty() ? nullptr : &start,
                                             rule.on_invalid_map(), &look);
