@@ -78,26 +78,31 @@ public:
       make_seed(seeds[s], static_cast<Index>(s));
     relax_from(seeds, false);
 
-    if(seeds.size() + 1 == target)
+    if(seeds.size() < target && target - seeds.size() <= most_scanned_seeds)
     {
-      // The last seed (the second one of a split, mostly): one scan finds
-      // the farthest face, with the heap's order, and the heap is not built.
-      Index s = no_index;
-      std::pair<double, Index> best;
-      for(Index f : region)
-        if(is_seed_[f] != stamp_)
-        {
-          const std::pair<double, Index> key(farthest_key(f, distance_[f]), reversed(f));
-          if(s == no_index || best < key)
+      // A few seeds (the segmentation's 10, a split's 2 or 5): one scan per
+      // seed finds the farthest face, in the heap's order, and no heap is
+      // kept; pushing every improved distance into it cost more (Voronoi
+      // sampling of refined_elephant x4, 355k faces: 0.40 -> 0.24 s).
+      while(seeds.size() < target)
+      {
+        Index s = no_index;
+        std::pair<double, Index> best;
+        for(Index f : region)
+          if(is_seed_[f] != stamp_)
           {
-            best = key;
-            s = f;
+            const std::pair<double, Index> key(farthest_key(f, distance_[f]), reversed(f));
+            if(s == no_index || best < key)
+            {
+              best = key;
+              s = f;
+            }
           }
-        }
-      CGAL_assertion(s != no_index);
-      make_seed(s, static_cast<Index>(seeds.size()));
-      seeds.push_back(s);
-      relax_from(std::vector<Index>(1, s), false);
+        CGAL_assertion(s != no_index);
+        make_seed(s, static_cast<Index>(seeds.size()));
+        seeds.push_back(s);
+        relax_from(std::vector<Index>(1, s), false);
+      }
     }
     else if(seeds.size() < target)
     {
@@ -146,6 +151,8 @@ private:
   typedef std::pair<double, Index> Entry;  // (distance, face)
 
   static double infinity() { return std::numeric_limits<double>::infinity(); }
+
+  static constexpr std::size_t most_scanned_seeds = 16;
 
   // Max-heap entries order equal distances by increasing face index.
   static Index reversed(Index f) { return no_index - f; }
