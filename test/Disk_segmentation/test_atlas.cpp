@@ -749,6 +749,77 @@ TEST(Atlas, InteriorCurvatureOfARegionFollowsGaussBonnet)
   }
 }
 
+// A square of n x n quads, each vertex raised to height(x, y).
+template <typename Height>
+TS::Soup raised_square(int n, const Height& height)
+{
+  TS::Soup s;
+  for(int j = 0; j <= n; ++j)
+    for(int i = 0; i <= n; ++i)
+    {
+      const double x = double(i) / n, y = double(j) / n;
+      s.points.push_back({{ x, y, height(x, y, i, j) }});
+    }
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i)
+    {
+      const std::size_t a = std::size_t(j * (n + 1) + i), b = a + 1, c = a + std::size_t(n) + 2, d = a + std::size_t(n) + 1;
+      s.triangles.push_back({{ a, b, c }});
+      s.triangles.push_back({{ a, c, d }});
+    }
+  return s;
+}
+
+TEST(Atlas, CurvatureSpreadCountsSeparatedSignsButNotNoise)
+{
+  // A bump (positive curvature on top, negative around it, about zero in
+  // all) and a square whose heights are noise (every vertex curved, the
+  // signs alternating at the scale of an edge). Angle defects are computed
+  // here from the law of cosines.
+  struct Case { const char* name; TS::Soup soup; bool separated; };
+  const Case cases[] = {
+    { "bump", raised_square(48, [](double x, double y, int, int) {
+        return 0.3 * std::exp(-((x - 0.5) * (x - 0.5) + (y - 0.5) * (y - 0.5)) / 0.03); }), true },
+    { "noise", raised_square(48, [](double, double, int i, int j) {
+        return 0.004 * double((i * 7919 + j * 104729) % 13 - 6) / 6.; }), false } };
+  for(const Case& c : cases)
+  {
+    SCOPED_TRACE(c.name);
+    const Mesh tm = make(c.soup);
+    double signed_total = 0., absolute_total = 0.;
+    for(Mesh::Vertex_index v : tm.vertices())
+    {
+      if(tm.is_border(v))
+        continue;
+      double defect = 2. * CGAL_PI;
+      for(Mesh::Halfedge_index h : CGAL::halfedges_around_target(tm.halfedge(v), tm))
+        defect -= corner_angle_by_cosines(tm.point(v), tm.point(tm.source(h)), tm.point(tm.target(tm.next(h))));
+      signed_total += defect;
+      absolute_total += std::abs(defect);
+    }
+    DS::internal::Indexed_triangle_mesh m;
+    std::vector<Mesh::Face_index> face_handles;
+    DS::internal::build_indexed_triangle_mesh(tm, DS::parameters::default_values(), m, face_handles);
+    const DS::internal::Interior_curvature curvature(m);
+    std::vector<DS::internal::Index> all(m.number_of_faces());
+    for(DS::internal::Index f = 0; f < all.size(); ++f) all[f] = f;
+    const double spread = curvature.spread(m, all);
+    EXPECT_NEAR(curvature(m, all), signed_total, 1e-9);
+    EXPECT_GE(spread, std::abs(signed_total) - 1e-9);
+    EXPECT_LE(spread, absolute_total + 1e-9);
+    if(c.separated)
+    {
+      EXPECT_LT(std::abs(signed_total), 0.1 * absolute_total);
+      EXPECT_GT(spread, 0.5 * absolute_total);
+    }
+    else
+    {
+      EXPECT_GT(absolute_total, 1.);
+      EXPECT_LT(spread, 0.1 * absolute_total);
+    }
+  }
+}
+
 TEST(Atlas, AConePointIsSplitThroughByTwoSeedsAroundIt)
 {
   // A disk whose centre is raised: the apex is a cone point. The split seeds

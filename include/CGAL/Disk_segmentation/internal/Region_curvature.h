@@ -9,7 +9,10 @@
 #include <CGAL/number_type_config.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <unordered_map>
 #include <vector>
 
 namespace CGAL {
@@ -42,6 +45,7 @@ public:
           degree_[m.corners[f][j]] = border_vertex;
           degree_[m.corners[f][(j + 1) % 3]] = border_vertex;
         }
+    number_cells(m);
   }
 
   // Thread-safe: the only scratch is local.
@@ -51,6 +55,46 @@ public:
     for_each_interior_vertex(m, faces, [&](Index v) { sum += defect_[v]; });
     return sum;
   }
+
+  // The curvature the region holds cell by cell, in absolute value, summed
+  // over the cells of a grid whose side is `cells_across` times less than
+  // the square root of the mesh's area: curvature of both signs in
+  // different places (a bumpy flank, a leg beside a belly) cancels in the
+  // signed total but adds up here, while noise finer than a cell still
+  // cancels. At least the absolute value of the signed total.
+  double spread(const Indexed_triangle_mesh& m, const std::vector<Index>& faces) const
+  {
+    // Zero between calls; one per thread, since queries run in parallel.
+    thread_local std::vector<double> in_cell;
+    thread_local std::vector<char> met;
+    thread_local std::vector<Index> touched;
+    if(in_cell.size() < number_of_cells_)
+    {
+      in_cell.resize(number_of_cells_, 0.);
+      met.resize(number_of_cells_, 0);
+    }
+    touched.clear();
+    for_each_interior_vertex(m, faces, [&](Index v) {
+      const Index c = cell_[v];
+      if(!met[c])
+      {
+        met[c] = 1;
+        touched.push_back(c);
+      }
+      in_cell[c] += defect_[v];
+    });
+    // Cells in the order first met: the sum does not depend on the thread.
+    double sum = 0.;
+    for(Index c : touched)
+    {
+      sum += std::abs(in_cell[c]);
+      in_cell[c] = 0.;
+      met[c] = 0;
+    }
+    return sum;
+  }
+
+  static constexpr double cells_across = 8.;
 
   // The interior vertex of the region with the largest |angle defect| (the
   // smallest index among equals), and that defect; no_index if none.
@@ -93,6 +137,49 @@ private:
 
   static constexpr Index border_vertex = no_index;
 
+  // Numbers the grid cells that hold a vertex, in the order of the
+  // vertices. Components are normalized each in its own frame: each has
+  // its own grid, of the same side in common units.
+  void number_cells(const Indexed_triangle_mesh& m)
+  {
+    const std::size_t nv = m.number_of_vertices();
+    cell_.assign(nv, 0);
+    std::vector<double> unit(nv, 1.);
+    std::vector<Index> component(nv, 0);
+    for(Index f = 0; f < m.number_of_faces(); ++f)
+      for(Index v : m.corners[f])
+      {
+        unit[v] = m.common_unit(f);
+        component[v] = m.face_component.empty() ? 0 : m.face_component[f];
+      }
+    const double side = std::sqrt(m.total_common_area()) / cells_across;
+    struct Hash
+    {
+      std::size_t operator()(const std::array<std::int64_t, 4>& k) const
+      {
+        std::uint64_t h = 0;
+        for(std::int64_t x : k)
+          h = (h ^ std::uint64_t(x)) * 0x9E3779B97F4A7C15ull;
+        return std::size_t(h ^ (h >> 29));
+      }
+    };
+    // Numbered in the order of the vertices: the hash order does not matter.
+    std::unordered_map<std::array<std::int64_t, 4>, Index, Hash> number;
+    for(std::size_t v = 0; v < nv; ++v)
+    {
+      std::array<std::int64_t, 4> key = {{ std::int64_t(component[v]), 0, 0, 0 }};
+      // Unit 0: the component is below the double range next to the largest.
+      const double local_side = unit[v] > 0. ? side / unit[v] : 0.;
+      for(int k = 0; k < 3; ++k)
+        key[k + 1] = local_side > 0. && std::isfinite(local_side)
+                       ? static_cast<std::int64_t>(std::floor(m.points[v][k] / local_side))
+                       : 0;
+      const auto inserted = number.emplace(key, static_cast<Index>(number.size()));
+      cell_[v] = inserted.first->second;
+    }
+    number_of_cells_ = number.size();
+  }
+
   static double corner_angle(const std::array<double, 3>& a, const std::array<double, 3>& b,
                              const std::array<double, 3>& c)
   {
@@ -104,6 +191,8 @@ private:
 
   std::vector<double> defect_;
   std::vector<Index> degree_;  // faces around each vertex; border_vertex on the mesh's border
+  std::vector<Index> cell_;    // per vertex, see spread()
+  std::size_t number_of_cells_ = 0;
 };
 
 } // namespace internal
