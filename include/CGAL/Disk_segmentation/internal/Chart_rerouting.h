@@ -73,12 +73,7 @@ std::vector<Arc_change> reroute_arcs(const Indexed_triangle_mesh& m, Region_topo
       continue;
     if(rule.too_large(size[change.a]) || rule.too_large(size[change.b]))
     {
-      for(const auto& moved : change.old_labels)
-      {
-        ++size[moved.second];
-        --size[labels[moved.first]];
-        labels[moved.first] = moved.second;
-      }
+      router.undo(labels, size, change);
       continue;
     }
     for(const auto& moved : change.old_labels)
