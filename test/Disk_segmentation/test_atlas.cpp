@@ -1357,6 +1357,52 @@ TEST(Atlas, PairedSolvesMatchADenseSolveOfTheSameSystem)
       EXPECT_NEAR(x[i][c], expected(i, c), 1e-10 * (1. + std::abs(expected(i, c)))) << "row " << i << ", column " << c;
 }
 
+TEST(Atlas, HermitianSolvesMatchADenseSolveOfTheSameSystem)
+{
+  // LSCM's complex system is factored by Hermitian_ldlt. Checked against
+  // Eigen's dense LDL^T of the same Hermitian positive definite band,
+  // rebuilt here entry by entry (complex links of several lengths, so that
+  // the factor has fill), and, with a singular matrix, its refusal.
+  const int n = 150;
+  typedef std::complex<double> Complex;
+  auto entry = [](int i, int j) {
+    if(i == j) return Complex(5. + 0.02 * i, 0.);
+    const int d = std::abs(i - j);
+    const Complex upper = d == 1 ? Complex(-1., 0.5) : d == 4 ? Complex(-0.5, -0.75) : d == 13 ? Complex(0.25, 0.25)
+                                                                                          : Complex(0., 0.);
+    return i < j ? upper : std::conj(upper);
+  };
+  Eigen::SparseMatrix<Complex> a;
+  DS::internal::assemble_upper_triangle(Eigen::Index(n), std::size_t(4 * n), [&](Eigen::Index k, const auto& add) {
+    for(int i = 0; i <= int(k); ++i)
+      if(entry(i, int(k)) != Complex(0., 0.))
+        add(Eigen::Index(i), entry(i, int(k)));
+  }, a);
+  const DS::internal::Hermitian_ldlt solver(a);
+  ASSERT_TRUE(solver.ok());
+  Eigen::MatrixXcd dense(n, n);
+  Eigen::VectorXcd b(n);
+  for(int i = 0; i < n; ++i)
+  {
+    for(int j = 0; j < n; ++j)
+      dense(i, j) = entry(i, j);
+    b[i] = Complex(std::sin(0.3 * i) + 0.5, std::cos(0.7 * i) - 0.02 * i);
+  }
+  Eigen::VectorXcd x = b;
+  solver.solve(x);
+  const Eigen::VectorXcd expected = dense.ldlt().solve(b);
+  for(int i = 0; i < n; ++i)
+    EXPECT_NEAR(std::abs(x[i] - expected[i]), 0., 1e-10 * (1. + std::abs(expected[i]))) << "row " << i;
+
+  // [1, 1; 1, 1]: the second pivot is zero.
+  Eigen::SparseMatrix<Complex> singular;
+  DS::internal::assemble_upper_triangle(Eigen::Index(2), std::size_t(3), [&](Eigen::Index k, const auto& add) {
+    for(int i = 0; i <= int(k); ++i)
+      add(Eigen::Index(i), Complex(1., 0.));
+  }, singular);
+  EXPECT_FALSE(DS::internal::Hermitian_ldlt(singular).ok());
+}
+
 TEST(Atlas, ChartEdgesListEveryEdgeOnceAroundBothEnds)
 {
   // The edge list the LSCM and ARAP matrices are assembled from, checked

@@ -6,6 +6,7 @@
 
 #include <CGAL/disable_warnings.h>
 
+#include <CGAL/Disk_segmentation/internal/Hermitian_ldlt.h>
 #include <CGAL/Disk_segmentation/internal/Local_global_arap.h>
 
 #include <Eigen/Sparse>
@@ -96,7 +97,7 @@ inline bool free_border_lscm(const Chart_geometry& g, const std::vector<std::siz
   // runs along e from x to y (from y to x), 0 off the border. Its LDL^T
   // has the vertex graph's pattern, half the entries and about half the
   // work of the real system's (bunny00: 0.28 s of its 0.38 s of
-  // factorizations went to the real LSCM systems).
+  // factorizations went to the real LSCM systems); see Hermitian_ldlt.
   typedef std::complex<double> Complex;
   auto entry = [&](std::size_t x, std::size_t e) {
     const double along = edges.ends[e][0] == x ? border_direction[e] : -border_direction[e];
@@ -130,12 +131,11 @@ inline bool free_border_lscm(const Chart_geometry& g, const std::vector<std::siz
         add(unknown[w], entry(w, edges.edge[k]));
     }
   }, h);
-  Ordered_sparse_ldlt<Complex> solver(h);
-  if(solver.info() != Eigen::Success)
+  const Hermitian_ldlt solver(h);
+  if(!solver.ok())
     return false;
-  const Eigen::VectorXcd z = solver.solve(rhs);
-  if(solver.info() != Eigen::Success)
-    return false;
+  Eigen::VectorXcd z = rhs;
+  solver.solve(z);
   for(std::size_t v = 0; v < n; ++v)
     if(unknown[v] != none)
       uv[v] = {{ z[unknown[v]].real(), z[unknown[v]].imag() }};
