@@ -292,38 +292,16 @@ private:
   // Adds `sign` to the shared vertex count of every pair of regions around v.
   void count_pairs_around(const std::vector<Index>& labels, Index v, int sign)
   {
-    Index around[16];
-    std::size_t regions = 0;
-    bool many = false;
+    around_.clear();
     for(Index k = vertex_faces_.begin[v]; k < vertex_faces_.begin[v + 1]; ++k)
     {
       const Index l = labels[vertex_faces_.faces[k]];
-      if(l == no_index || std::find(around, around + regions, l) != around + regions)
-        continue;
-      if(regions == 16)
-      {
-        many = true;
-        break;
-      }
-      around[regions++] = l;
+      if(l != no_index && std::find(around_.begin(), around_.end(), l) == around_.end())
+        around_.push_back(l);
     }
-    if(many)
-    {
-      // A vertex between more than 16 regions: rare enough to count slowly.
-      std::vector<Index> all;
-      for(Index k = vertex_faces_.begin[v]; k < vertex_faces_.begin[v + 1]; ++k)
-        if(labels[vertex_faces_.faces[k]] != no_index)
-          all.push_back(labels[vertex_faces_.faces[k]]);
-      std::sort(all.begin(), all.end());
-      all.erase(std::unique(all.begin(), all.end()), all.end());
-      for(std::size_t i = 0; i < all.size(); ++i)
-        for(std::size_t j = i + 1; j < all.size(); ++j)
-          shared_vertices_[pair_key(all[i], all[j])] += sign;
-      return;
-    }
-    for(std::size_t i = 0; i < regions; ++i)
-      for(std::size_t j = i + 1; j < regions; ++j)
-        shared_vertices_[pair_key(around[i], around[j])] += sign;
+    for(std::size_t i = 0; i < around_.size(); ++i)
+      for(std::size_t j = i + 1; j < around_.size(); ++j)
+        shared_vertices_[pair_key(around_[i], around_[j])] += sign;
   }
 
   // Calls visit(v) once for each corner of the faces `change` moved.
@@ -520,18 +498,7 @@ private:
   // (on the mesh's border) or is not an edge.
   bool faces_of_edge(Index u, Index w, Index& f, Index& g) const
   {
-    const std::uint64_t key = edge_key(u, w);
-    for(Index k = vertex_faces_.begin[u]; k < vertex_faces_.begin[u + 1]; ++k)
-    {
-      f = vertex_faces_.faces[k];
-      for(int e = 0; e < 3; ++e)
-        if(edge_key(m_.corners[f][e], m_.corners[f][(e + 1) % 3]) == key)
-        {
-          g = m_.neighbors[f][e];
-          return g != no_index;
-        }
-    }
-    return false;
+    return directed_faces(u, w, f, g) || directed_faces(w, u, f, g);
   }
 
   // The regions on both sides of the edge (u, w), smaller first.
@@ -753,6 +720,7 @@ private:
   std::vector<unsigned char> side_;
   std::vector<std::vector<Index> > members_;
   std::unordered_map<std::uint64_t, std::ptrdiff_t> shared_vertices_;  // per pair of regions (pair_key())
+  std::vector<Index> around_;  // scratch of count_pairs_around()
 };
 
 } // namespace internal
