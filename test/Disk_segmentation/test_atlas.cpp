@@ -652,6 +652,15 @@ TEST(Atlas, DegenerateFacesStillGiveAValidAtlas)
   }
 }
 
+// The indices of all faces of m, in order: a region that is the whole mesh.
+std::vector<DS::internal::Index> every_face(const DS::internal::Indexed_triangle_mesh& m)
+{
+  std::vector<DS::internal::Index> all(m.number_of_faces());
+  for(DS::internal::Index f = 0; f < all.size(); ++f)
+    all[f] = f;
+  return all;
+}
+
 TEST(Atlas, SplittingAChartGivesValidDiskPieces)
 {
   // The last resort of the fallback chain, run directly on a chart that
@@ -661,8 +670,7 @@ TEST(Atlas, SplittingAChartGivesValidDiskPieces)
   std::vector<Mesh::Face_index> face_handles;
   DS::internal::build_indexed_triangle_mesh(tm, DS::parameters::default_values(), m, face_handles);
   DS::internal::Splitter splitter(m);
-  std::vector<DS::internal::Index> all(m.number_of_faces());
-  for(DS::internal::Index f = 0; f < all.size(); ++f) all[f] = f;
+  std::vector<DS::internal::Index> all = every_face(m);
   std::vector<DS::internal::Chart> pieces;
   std::vector<DS::internal::Chart_outcome> outcomes;
   std::vector<std::uint64_t> rejected;
@@ -714,8 +722,7 @@ TEST(Atlas, InteriorCurvatureOfARegionFollowsGaussBonnet)
     std::vector<Mesh::Face_index> face_handles;
     DS::internal::build_indexed_triangle_mesh(tm, DS::parameters::default_values(), m, face_handles);
     const DS::internal::Interior_curvature curvature(m);
-    std::vector<DS::internal::Index> all(m.number_of_faces());
-    for(DS::internal::Index f = 0; f < all.size(); ++f) all[f] = f;
+    std::vector<DS::internal::Index> all = every_face(m);
     EXPECT_NEAR(curvature(m, all), expected_whole[k], 1e-9);
     if(cases[k].cap_height > 1.)
       continue;
@@ -801,8 +808,7 @@ TEST(Atlas, CurvatureSpreadCountsSeparatedSignsButNotNoise)
     std::vector<Mesh::Face_index> face_handles;
     DS::internal::build_indexed_triangle_mesh(tm, DS::parameters::default_values(), m, face_handles);
     const DS::internal::Interior_curvature curvature(m);
-    std::vector<DS::internal::Index> all(m.number_of_faces());
-    for(DS::internal::Index f = 0; f < all.size(); ++f) all[f] = f;
+    std::vector<DS::internal::Index> all = every_face(m);
     const double spread = curvature.spread(m, all);
     EXPECT_NEAR(curvature(m, all), signed_total, 1e-9);
     EXPECT_GE(spread, std::abs(signed_total) - 1e-9);
@@ -831,8 +837,7 @@ TEST(Atlas, AConePointIsSplitThroughByTwoSeedsAroundIt)
   DS::internal::Indexed_triangle_mesh m;
   std::vector<Mesh::Face_index> face_handles;
   DS::internal::build_indexed_triangle_mesh(tm, DS::parameters::default_values(), m, face_handles);
-  std::vector<DS::internal::Index> all(m.number_of_faces());
-  for(DS::internal::Index f = 0; f < all.size(); ++f) all[f] = f;
+  std::vector<DS::internal::Index> all = every_face(m);
 
   const DS::internal::Interior_curvature curvature(m);
   double defect = 0.;
