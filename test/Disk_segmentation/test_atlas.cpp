@@ -809,8 +809,10 @@ TEST(Atlas, CurvatureSpreadCountsSeparatedSignsButNotNoise)
     DS::internal::build_indexed_triangle_mesh(tm, DS::parameters::default_values(), m, face_handles);
     const DS::internal::Interior_curvature curvature(m);
     std::vector<DS::internal::Index> all = every_face(m);
-    const double spread = curvature.spread(m, all);
+    const DS::internal::Interior_curvature::Totals held = curvature.totals(m, all);
+    const double spread = held.spread;
     EXPECT_NEAR(curvature(m, all), signed_total, 1e-9);
+    EXPECT_EQ(held.signed_total, curvature(m, all));
     EXPECT_GE(spread, std::abs(signed_total) - 1e-9);
     EXPECT_LE(spread, absolute_total + 1e-9);
     if(c.separated)

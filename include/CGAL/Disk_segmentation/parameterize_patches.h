@@ -621,10 +621,11 @@ struct Split_rule
     if(curvature == nullptr || faces.size() < smallest_predicted_region)
       return false;
     const double limit = curvature_limit();
-    return std::abs((*curvature)(m, faces)) > limit || curvature->spread(m, faces) > spread_factor * limit;
+    const Interior_curvature::Totals held = curvature->totals(m, faces);
+    return std::abs(held.signed_total) > limit || held.spread > spread_factor * limit;
   }
 
-  // The curvature spread over a region (Interior_curvature::spread()) is
+  // The curvature spread over a region (Interior_curvature::Totals) is
   // held to twice the limit on its signed total: 8 steradians at the
   // default bounds. Measured on the 634 candidates of at least 64 faces
   // that the descent parameterized on 35 meshes (the 23 shipped, the

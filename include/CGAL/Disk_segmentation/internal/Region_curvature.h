@@ -56,13 +56,21 @@ public:
     return sum;
   }
 
-  // The curvature the region holds cell by cell, in absolute value, summed
-  // over the cells of a grid whose side is `cells_across` times less than
-  // the square root of the mesh's area: curvature of both signs in
-  // different places (a bumpy flank, a leg beside a belly) cancels in the
-  // signed total but adds up here, while noise finer than a cell still
-  // cancels. At least the absolute value of the signed total.
-  double spread(const Indexed_triangle_mesh& m, const std::vector<Index>& faces) const
+  // What a region holds: its signed total (operator()) and its spread, the
+  // curvature it holds cell by cell, in absolute value, summed over the
+  // cells of a grid whose side is `cells_across` times less than the square
+  // root of the mesh's area: curvature of both signs in different places
+  // (a bumpy flank, a leg beside a belly) cancels in the signed total but
+  // adds up in the spread, while noise finer than a cell still cancels. The
+  // spread is at least the absolute value of the signed total.
+  struct Totals
+  {
+    double signed_total = 0.;
+    double spread = 0.;
+  };
+
+  // Both totals in one walk over the region.
+  Totals totals(const Indexed_triangle_mesh& m, const std::vector<Index>& faces) const
   {
     // Zero between calls; one per thread, since queries run in parallel.
     thread_local std::vector<double> in_cell;
@@ -74,7 +82,9 @@ public:
       met.resize(number_of_cells_, 0);
     }
     touched.clear();
+    Totals t;
     for_each_interior_vertex(m, faces, [&](Index v) {
+      t.signed_total += defect_[v];
       const Index c = cell_[v];
       if(!met[c])
       {
@@ -84,14 +94,13 @@ public:
       in_cell[c] += defect_[v];
     });
     // Cells in the order first met: the sum does not depend on the thread.
-    double sum = 0.;
     for(Index c : touched)
     {
-      sum += std::abs(in_cell[c]);
+      t.spread += std::abs(in_cell[c]);
       in_cell[c] = 0.;
       met[c] = 0;
     }
-    return sum;
+    return t;
   }
 
   static constexpr double cells_across = 8.;
@@ -191,7 +200,7 @@ private:
 
   std::vector<double> defect_;
   std::vector<Index> degree_;  // faces around each vertex; border_vertex on the mesh's border
-  std::vector<Index> cell_;    // per vertex, see spread()
+  std::vector<Index> cell_;    // per vertex, see totals()
   std::size_t number_of_cells_ = 0;
 };
 
