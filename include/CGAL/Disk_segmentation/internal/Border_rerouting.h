@@ -263,14 +263,11 @@ public:
   // Takes back a change that reroute() made.
   void undo(std::vector<Index>& labels, std::vector<std::size_t>& size, const Arc_change& change)
   {
-    for_vertices_of(change, [&](Index v) { count_pairs_around(labels, v, -1); });
-    for(const auto& moved : change.old_labels)
-    {
-      ++size[moved.second];
-      --size[labels[moved.first]];
-      labels[moved.first] = moved.second;
-    }
-    for_vertices_of(change, [&](Index v) { count_pairs_around(labels, v, 1); });
+    relabel(labels, change, [&](Index f, Index old_label) {
+      ++size[old_label];
+      --size[labels[f]];
+      labels[f] = old_label;
+    });
   }
 
 private:
@@ -321,13 +318,22 @@ private:
   // Moves the faces of `change` to their new regions.
   void apply(std::vector<Index>& labels, const Arc_change& change)
   {
+    relabel(labels, change, [&](Index f, Index old_label) {
+      const Index now = old_label == change.a ? change.b : change.a;
+      labels[f] = now;
+      members_[now].push_back(f);
+    });
+  }
+
+  // Calls `move(f, old label)` on each face of `change`, with the shared
+  // vertex counts of the pairs around its corners taken out before and
+  // counted again after.
+  template <typename Move>
+  void relabel(std::vector<Index>& labels, const Arc_change& change, const Move& move)
+  {
     for_vertices_of(change, [&](Index v) { count_pairs_around(labels, v, -1); });
     for(const auto& moved : change.old_labels)
-    {
-      const Index now = moved.second == change.a ? change.b : change.a;
-      labels[moved.first] = now;
-      members_[now].push_back(moved.first);
-    }
+      move(moved.first, moved.second);
     for_vertices_of(change, [&](Index v) { count_pairs_around(labels, v, 1); });
   }
 
