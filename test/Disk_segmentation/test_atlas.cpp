@@ -20,6 +20,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -558,6 +559,33 @@ TEST(Atlas, SameResultForAnyNumberOfThreads)
     if(!tm.is_border(h) && (one.uv[h] != two.uv[h]))
       ++differences;
   EXPECT_EQ(differences, 0u);
+}
+
+TEST(Atlas, EveryIndexRunsOnceOnAnyNumberOfThreadsLargestFirst)
+{
+  // Sizes with ties: the order must be by decreasing size, ties by index,
+  // and each index must run exactly once whatever the number of threads.
+  const std::size_t n = 1000;
+  std::vector<std::size_t> size(n);
+  for(std::size_t i = 0; i < n; ++i)
+    size[i] = (i * 7919) % 37;
+  const std::vector<std::size_t> order = DS::internal::largest_first(n, [&](std::size_t i) { return size[i]; });
+  ASSERT_EQ(order.size(), n);
+  for(std::size_t k = 1; k < n; ++k)
+  {
+    const std::size_t a = order[k - 1], b = order[k];
+    EXPECT_TRUE(size[a] > size[b] || (size[a] == size[b] && a < b)) << "positions " << k - 1 << ", " << k;
+  }
+  for(unsigned int threads : { 0u, 1u, 2u, 3u })
+  {
+    std::vector<std::atomic<int> > runs(n);
+    for(std::atomic<int>& r : runs)
+      r = 0;
+    DS::internal::for_each_index(n, threads, [&](std::size_t k) { ++runs[order[k]]; });
+    EXPECT_EQ(std::count_if(runs.begin(), runs.end(), [](const std::atomic<int>& r) { return r == 1; }),
+              static_cast<long>(n))
+      << threads << " threads";
+  }
 }
 
 TEST(Atlas, TightPackingKeepsOneTexelDensityAndBeatsTheGrid)

@@ -855,10 +855,8 @@ Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, con
     std::vector<std::vector<Index> > faces(wave.size());
     for(std::size_t i = 0; i < wave.size(); ++i)
       faces[i] = candidate_faces(wave[i]);
-    std::vector<std::size_t> order(wave.size());
-    std::iota(order.begin(), order.end(), std::size_t(0));
-    std::stable_sort(order.begin(), order.end(),
-                     [&](std::size_t a, std::size_t b) { return faces[a].size() > faces[b].size(); });
+    const std::vector<std::size_t> order =
+      internal::largest_first(wave.size(), [&](std::size_t i) { return faces[i].size(); });
     std::vector<internal::Chart> charts(wave.size());
     std::vector<internal::Chart_outcome> outcomes(wave.size());
     std::vector<char> accepted(wave.size(), 0), too_curved(wave.size(), 0);
@@ -927,8 +925,14 @@ Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, con
     std::vector<std::vector<internal::Chart> > pieces(to_split.size());
     std::vector<std::vector<internal::Chart_outcome> > piece_outcomes(to_split.size());
     std::vector<std::vector<std::uint64_t> > rejected_pieces(to_split.size());
-    internal::for_each_index(to_split.size(), threads, [&](std::size_t i) {
-      internal::split_and_parameterize(m, splitter.local(), candidate_faces(to_split[i]), method, use_fallback,
+    std::vector<std::vector<Index> > split_faces(to_split.size());
+    for(std::size_t i = 0; i < to_split.size(); ++i)
+      split_faces[i] = candidate_faces(to_split[i]);
+    const std::vector<std::size_t> order =
+      internal::largest_first(to_split.size(), [&](std::size_t i) { return split_faces[i].size(); });
+    internal::for_each_index(to_split.size(), threads, [&](std::size_t k) {
+      const std::size_t i = order[k];
+      internal::split_and_parameterize(m, splitter.local(), split_faces[i], method, use_fallback,
                                        pieces[i], piece_outcomes[i], needs_split, rejected_pieces[i],
                                        to_split[i].excess_density, to_split[i].parent);
     });

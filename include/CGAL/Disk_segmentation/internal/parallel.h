@@ -7,13 +7,16 @@
 #include <CGAL/use.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/blocked_range.h>
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 #endif
 
+#include <algorithm>
+#include <atomic>
 #include <cstddef>
+#include <numeric>
+#include <vector>
 
 namespace CGAL {
 namespace Disk_segmentation {
@@ -69,16 +72,21 @@ void for_each_piece(int n, bool parallel, const Work& work)
 }
 
 // Runs `work(i)` for i in [0, n), on up to `threads` threads (0: TBB's
-// choice). Each call must touch only its own data.
+// choice), each thread taking the next index as soon as it is free: given
+// the costliest work first (see largest_first()), the threads end together.
+// Each call must touch only its own data.
 template <typename Work>
 void for_each_index(std::size_t n, unsigned int threads, const Work& work)
 {
 #ifdef CGAL_LINKED_WITH_TBB
-  if(threads != 1)
+  if(threads != 1 && n > 1)
   {
     within_arena(threads, [&] {
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1), [&](const tbb::blocked_range<std::size_t>& r) {
-        for(std::size_t i = r.begin(); i != r.end(); ++i)
+      std::atomic<std::size_t> next(0);
+      // One task per thread of the arena; a task that starts late finds
+      // less (or nothing) left.
+      tbb::parallel_for(0, tbb::this_task_arena::max_concurrency(), [&](int) {
+        for(std::size_t i = next++; i < n; i = next++)
           work(i);
       });
     });
@@ -89,6 +97,17 @@ void for_each_index(std::size_t n, unsigned int threads, const Work& work)
 #endif
   for(std::size_t i = 0; i < n; ++i)
     work(i);
+}
+
+// The indices [0, n) by decreasing `size(i)`, equal sizes by index: the
+// order in which to hand out work whose cost grows with its size.
+template <typename Size>
+std::vector<std::size_t> largest_first(std::size_t n, const Size& size)
+{
+  std::vector<std::size_t> order(n);
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return size(a) > size(b); });
+  return order;
 }
 
 } // namespace internal
