@@ -576,16 +576,26 @@ TEST(Atlas, EveryIndexRunsOnceOnAnyNumberOfThreadsLargestFirst)
     const std::size_t a = order[k - 1], b = order[k];
     EXPECT_TRUE(size[a] > size[b] || (size[a] == size[b] && a < b)) << "positions " << k - 1 << ", " << k;
   }
+  auto size_of = [&](std::size_t i) { return size[i]; };
   for(unsigned int threads : { 0u, 1u, 2u, 3u })
   {
     std::vector<std::atomic<int> > runs(n);
     for(std::atomic<int>& r : runs)
       r = 0;
-    DS::internal::for_each_index(n, threads, [&](std::size_t k) { ++runs[order[k]]; });
+    auto on_threads = [&](std::size_t count, const auto& work) { DS::internal::for_each_index(count, threads, work); };
+    DS::internal::for_each_largest_first(on_threads, n, size_of, [&](std::size_t i) { ++runs[i]; });
     EXPECT_EQ(std::count_if(runs.begin(), runs.end(), [](const std::atomic<int>& r) { return r == 1; }),
               static_cast<long>(n))
       << threads << " threads";
   }
+  // In a sequential loop the work comes in that order.
+  std::vector<std::size_t> visited;
+  auto in_order = [](std::size_t count, const auto& work) {
+    for(std::size_t k = 0; k < count; ++k)
+      work(k);
+  };
+  DS::internal::for_each_largest_first(in_order, n, size_of, [&](std::size_t i) { visited.push_back(i); });
+  EXPECT_EQ(visited, order);
 }
 
 TEST(Atlas, TightPackingKeepsOneTexelDensityAndBeatsTheGrid)

@@ -792,6 +792,7 @@ Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, con
   const Parameterization_method method = settings.method;
   const bool use_fallback = settings.use_fallback;
   const unsigned int threads = settings.threads;
+  const auto for_each = [&](std::size_t n, const auto& work) { internal::for_each_index(n, threads, work); };
   const bool require_disks = settings.require_disks;
 
   const internal::Indexed_triangle_mesh& m = input.mesh;
@@ -851,17 +852,15 @@ Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, con
   // Waves: each goes one level down the tree, at most its height.
   while(!wave.empty())
   {
-    // Largest candidates first, so that threads end together.
     std::vector<std::vector<Index> > faces(wave.size());
     for(std::size_t i = 0; i < wave.size(); ++i)
       faces[i] = candidate_faces(wave[i]);
-    const std::vector<std::size_t> order =
-      internal::largest_first(wave.size(), [&](std::size_t i) { return faces[i].size(); });
     std::vector<internal::Chart> charts(wave.size());
     std::vector<internal::Chart_outcome> outcomes(wave.size());
     std::vector<char> accepted(wave.size(), 0), too_curved(wave.size(), 0);
-    internal::for_each_index(wave.size(), threads, [&](std::size_t k) {
-      const std::size_t i = order[k];
+    // Largest candidates first, so that threads end together.
+    auto candidate_size = [&](std::size_t i) { return faces[i].size(); };
+    internal::for_each_largest_first(for_each, wave.size(), candidate_size, [&](std::size_t i) {
       const double area = internal::region_area(m, faces[i]);
       if(needs_split.too_large(faces[i].size()) ||
          needs_split.predicted_over_bound(wave[i].excess_density, area, faces[i].size()))
@@ -928,10 +927,8 @@ Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, con
     std::vector<std::vector<Index> > split_faces(to_split.size());
     for(std::size_t i = 0; i < to_split.size(); ++i)
       split_faces[i] = candidate_faces(to_split[i]);
-    const std::vector<std::size_t> order =
-      internal::largest_first(to_split.size(), [&](std::size_t i) { return split_faces[i].size(); });
-    internal::for_each_index(to_split.size(), threads, [&](std::size_t k) {
-      const std::size_t i = order[k];
+    auto leaf_size = [&](std::size_t i) { return split_faces[i].size(); };
+    internal::for_each_largest_first(for_each, to_split.size(), leaf_size, [&](std::size_t i) {
       internal::split_and_parameterize(m, splitter.local(), split_faces[i], method, use_fallback,
                                        pieces[i], piece_outcomes[i], needs_split, rejected_pieces[i],
                                        to_split[i].excess_density, to_split[i].parent);
@@ -949,12 +946,9 @@ Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, con
       }
   }
   if(bounded && settings.merge_charts)
-    internal::merge_kept_charts(m, topology, kept, needs_split, method, use_fallback,
-                                [&](std::size_t n, const auto& work) { internal::for_each_index(n, threads, work); },
-                                rejected_regions);
+    internal::merge_kept_charts(m, topology, kept, needs_split, method, use_fallback, for_each, rejected_regions);
   if(bounded && settings.straighten_borders)
-    internal::reroute_kept_charts(m, topology, kept, needs_split, method, use_fallback,
-                                  [&](std::size_t n, const auto& work) { internal::for_each_index(n, threads, work); });
+    internal::reroute_kept_charts(m, topology, kept, needs_split, method, use_fallback, for_each);
   progress("parameterization", number_of_patches, number_of_patches);
 
   // Each patch's charts in tree order; the first keeps the patch's id if

@@ -183,10 +183,8 @@ std::size_t reroute_kept_charts(const Indexed_triangle_mesh& m, Region_topology&
     for(std::size_t j = 0; j < to_solve.size(); ++j)
       failed[j] = !rule.too_large(faces[j].size()) && topology.is_disk(faces[j]) ? 0 : 1;
     const Arap_early_look early_look = rule.early_look();
-    const std::vector<std::size_t> order =
-      largest_first(to_solve.size(), [&](std::size_t j) { return faces[j].size(); });
-    for_each(to_solve.size(), [&](std::size_t k) {
-      const std::size_t j = order[k];
+    auto chart_size = [&](std::size_t j) { return faces[j].size(); };
+    for_each_largest_first(for_each, to_solve.size(), chart_size, [&](std::size_t j) {
       if(failed[j])
         return;
       const std::size_t i = to_solve[j];

@@ -110,6 +110,16 @@ std::vector<std::size_t> largest_first(std::size_t n, const Size& size)
   return order;
 }
 
+// Runs `work(i)` for i in [0, n) through `for_each` (a loop like
+// for_each_index(), given `n` and the work on a position), the largest
+// `size(i)` handed out first.
+template <typename ForEach, typename Size, typename Work>
+void for_each_largest_first(const ForEach& for_each, std::size_t n, const Size& size, const Work& work)
+{
+  const std::vector<std::size_t> order = largest_first(n, size);
+  for_each(n, [&](std::size_t k) { work(order[k]); });
+}
+
 } // namespace internal
 } // namespace Disk_segmentation
 } // namespace CGAL
