@@ -48,15 +48,7 @@ public:
     number_cells(m);
   }
 
-  // Thread-safe: the only scratch is local.
-  double operator()(const Indexed_triangle_mesh& m, const std::vector<Index>& faces) const
-  {
-    double sum = 0.;
-    for_each_interior_vertex(m, faces, [&](Index v) { sum += defect_[v]; });
-    return sum;
-  }
-
-  // What a region holds: its signed total (operator()) and its spread, the
+  // What a region holds: its signed total (see above) and its spread, the
   // curvature it holds cell by cell, in absolute value, summed over the
   // cells of a grid whose side is `cells_across` times less than the square
   // root of the mesh's area: curvature of both signs in different places
@@ -69,7 +61,8 @@ public:
     double spread = 0.;
   };
 
-  // Both totals in one walk over the region.
+  // Both totals in one walk over the region. Thread-safe: the scratch is
+  // per thread.
   Totals totals(const Indexed_triangle_mesh& m, const std::vector<Index>& faces) const
   {
     // Zero between calls; one per thread, since queries run in parallel.
