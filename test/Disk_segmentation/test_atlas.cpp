@@ -598,6 +598,41 @@ TEST(Atlas, EveryIndexRunsOnceOnAnyNumberOfThreadsLargestFirst)
   EXPECT_EQ(visited, order);
 }
 
+TEST(Atlas, WorkThatMakesWorkRunsEveryItemOnceOnAnyNumberOfThreads)
+{
+  // Items are the nodes of a binary heap of n nodes: node i adds its
+  // children 2i + 1 and 2i + 2 while they exist, so each node must run
+  // exactly once, whatever the number of threads, and none runs twice.
+  const std::size_t n = 5000;
+  for(unsigned int threads : { 0u, 1u, 2u, 3u })
+  {
+    std::vector<std::atomic<int> > runs(n);
+    for(std::atomic<int>& r : runs)
+      r = 0;
+    std::vector<std::size_t> roots(1, 0);
+    DS::internal::for_each_growing(roots, threads, [&](std::size_t& i, const auto& add) {
+      ++runs[i];
+      for(std::size_t child : { 2 * i + 1, 2 * i + 2 })
+        if(child < n)
+          add(std::size_t(child));
+    });
+    EXPECT_EQ(std::count_if(runs.begin(), runs.end(), [](const std::atomic<int>& r) { return r == 1; }),
+              static_cast<long>(n))
+      << threads << " threads";
+  }
+  // On one thread the work runs depth first: the last item added first.
+  std::vector<std::size_t> visited;
+  DS::internal::for_each_growing(std::vector<std::size_t>{ 0, 1 }, 1, [&](std::size_t& i, const auto& add) {
+    visited.push_back(i);
+    if(i == 0)
+    {
+      add(std::size_t(2));
+      add(std::size_t(3));
+    }
+  });
+  EXPECT_EQ(visited, (std::vector<std::size_t>{ 0, 3, 2, 1 }));
+}
+
 TEST(Atlas, TightPackingKeepsOneTexelDensityAndBeatsTheGrid)
 {
   // On the paper's charts and on the bounded ones, whose jagged, elongated

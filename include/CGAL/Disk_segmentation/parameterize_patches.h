@@ -43,8 +43,10 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <numeric>
 #include <string>
+#include <tuple>
 #include <unordered_set>
 #include <vector>
 
@@ -289,18 +291,131 @@ inline std::vector<Index> opposite_faces_around(const Indexed_triangle_mesh& m, 
   return std::vector<Index>{ fan[0], fan[farthest] };
 }
 
+// A region below a rejected candidate (see split_and_parameterize()):
+// to split (`split`), or to try as one chart. `path` extends the
+// candidate's by the region's index among the parts of every split above
+// it, so that pieces ordered by path come in the order a recursion gives.
+struct Split_task
+{
+  std::vector<Index> faces;
+  double excess_density;  // of the nearest parameterized ancestor (see Split_rule)
+  bool split;
+  Parent_chart parent;    // the nearest valid parameterized ancestor, if any
+  std::vector<std::size_t> path;
+};
+
+// One step of split_and_parameterize(): `task` either is split, and each
+// part is given to `add` (last part first), or is tried as one chart,
+// which `keep(path, chart, outcome)` receives or which, rejected, is given
+// to `add` again to be split; `reject(key)` receives the region_key() of
+// every region parameterized and rejected.
+//
+// Bound: a region of at least 2 faces gets at least two seeds, each
+// keeping its own face, so every part is smaller, and a single triangle is
+// always kept: at most |faces| - 1 splits below a candidate, nested as
+// deep (far fewer in practice: cells halve the chart). A region whose
+// points all coincide, where zero arcs would let a split take only one
+// face off, is cut into single faces at once.
+template <typename NeedsSplit, typename Add, typename Keep, typename Reject>
+void split_step(const Indexed_triangle_mesh& m, Splitter& splitter, Split_task& task, Parameterization_method requested,
+                bool use_fallback, const NeedsSplit& needs_split, const Arap_early_look& early_look, const Add& add,
+                const Keep& keep, const Reject& reject)
+{
+  if(!task.split)
+  {
+    const double area = region_area(m, task.faces);
+    if(needs_split.too_large(task.faces.size()) ||
+       needs_split.predicted_over_bound(task.excess_density, area, task.faces.size()) ||
+       needs_split.predicted_too_curved(task.faces))
+    {
+      task.split = true;
+      add(std::move(task));
+      return;
+    }
+    Chart c = make_chart(m, task.faces);
+    Chart_outcome outcome;
+    if(accept_restriction(task.parent, c, outcome, splitter, needs_split))
+    {
+      keep(std::move(task.path), std::move(c), outcome);
+      return;
+    }
+    Early_look look{ &early_look, Early_judgement() };
+    outcome = parameterize_chart(m, c, requested, use_fallback, needs_split.on_invalid_map(), &look);
+    double excess = 0.;
+    if(task.faces.size() == 1 || !needs_split(c, outcome, excess, look.ended))
+    {
+      keep(std::move(task.path), std::move(c), outcome);
+      return;
+    }
+    {
+      std::vector<Index> sorted = task.faces;
+      std::sort(sorted.begin(), sorted.end());
+      reject(region_key(sorted));
+    }
+    task.split = true;
+    if(outcome.valid)
+    {
+      task.excess_density = needs_split.excess_density(excess, area);
+      task.parent = std::make_shared<const std::pair<Chart, Chart_outcome> >(std::move(c), outcome);
+    }
+    add(std::move(task));
+    return;
+  }
+
+  // Never valid as a whole, and Voronoi cells of zero arcs split it
+  // slowly: single faces at once.
+  if(m.at_one_point(task.faces))
+  {
+    for(std::size_t k = 0; k < task.faces.size(); ++k)
+    {
+      Chart c = make_chart(m, std::vector<Index>(1, task.faces[k]));
+      const Chart_outcome outcome = parameterize_chart(m, c, requested, use_fallback);
+      std::vector<std::size_t> path = task.path;
+      path.push_back(k);
+      keep(std::move(path), std::move(c), outcome);
+    }
+    return;
+  }
+  // More than two cells when the faces have more than two components (a
+  // patch that is not a disk, with require_disk_patches(false)).
+  // Under a bound, a region with a cone point inside (see
+  // smallest_cone_defect) is split by two seeds on opposite sides of its
+  // sharpest one instead.
+  std::size_t seeds = 0;
+  if(needs_split.curvature != nullptr)
+  {
+    double defect = 0.;
+    const Index cone = needs_split.curvature->sharpest_interior_vertex(m, task.faces, defect);
+    if(cone != no_index && std::abs(defect) > smallest_cone_defect)
+    {
+      const std::vector<Index> sides = opposite_faces_around(m, task.faces, cone);
+      if(sides.size() == 2 && splitter.fps.run_from_seeds(task.faces, sides))
+        seeds = 2;
+    }
+  }
+  if(seeds == 0)
+    seeds = splitter.fps.run(task.faces, 2).size();
+  std::vector<std::vector<Index> > cells(seeds);
+  for(Index f : task.faces)
+    cells[splitter.fps.cell(f)].push_back(f);
+  std::vector<std::vector<Index> > parts =
+    refine_region_list(splitter.topology, splitter.fps, std::move(cells), 5);
+  if(needs_split.smoother != nullptr)
+    smooth_parts(*needs_split.smoother, splitter, task.faces, parts);
+  for(std::size_t i = parts.size(); i-- > 0;)
+  {
+    std::vector<std::size_t> path = task.path;
+    path.push_back(i);
+    add(Split_task{ std::move(parts[i]), task.excess_density, false, task.parent, std::move(path) });
+  }
+}
+
 // Splits a chart into the Voronoi cells of two seeds (one per component if
 // it has more), refined to disks, and parameterizes each piece on its own; a
 // piece too large to parameterize, or for which `needs_split` holds once
-// parameterized, is split again. The region_key() of every piece that was
+// parameterized, is split again (see split_step()). Pieces come in the
+// order of a recursion. The region_key() of every piece that was
 // parameterized and split again is added to `rejected`.
-//
-// Bound: `faces` (at least 2) gets at least two seeds, each keeping its own
-// face, so every piece is smaller than `faces`, and a single triangle is
-// always kept: at most |faces| - 1 splits below a patch, nested as deep
-// (far fewer in practice: cells halve the chart). A chart whose points all
-// coincide, where zero arcs would let a split take only one face off, is
-// cut into single faces at once.
 template <typename NeedsSplit>
 void split_and_parameterize(const Indexed_triangle_mesh& m, Splitter& splitter, const std::vector<Index>& faces,
                             Parameterization_method requested, bool use_fallback, std::vector<Chart>& pieces,
@@ -310,111 +425,17 @@ void split_and_parameterize(const Indexed_triangle_mesh& m, Splitter& splitter, 
 {
   if(faces.size() < 2)
     return;
-  // Depth-first with an explicit stack (a chain of uneven splits can be as
-  // deep as the region is large): a task either splits its faces, pushing
-  // one task per part in reverse order, or tries its faces as one chart,
-  // so pieces come out in the order a recursion would give.
-  struct Task
-  {
-    std::vector<Index> faces;
-    double excess_density;
-    bool split;
-    Parent_chart parent;
-  };
-  std::vector<Task> stack;
-  stack.push_back(Task{ faces, excess_density, true, std::move(parent) });
   const Arap_early_look early_look = needs_split.early_look();
-  // Ends: see the bound above; every split task has at least two faces and
-  // makes parts with fewer faces.
-  while(!stack.empty())
-  {
-    Task task = std::move(stack.back());
-    stack.pop_back();
-    if(!task.split)
-    {
-      const double area = region_area(m, task.faces);
-      if(needs_split.too_large(task.faces.size()) ||
-         needs_split.predicted_over_bound(task.excess_density, area, task.faces.size()) ||
-         needs_split.predicted_too_curved(task.faces))
-      {
-        task.split = true;
-        stack.push_back(std::move(task));
-        continue;
-      }
-      Chart c = make_chart(m, task.faces);
-      Chart_outcome outcome;
-      if(accept_restriction(task.parent, c, outcome, splitter, needs_split))
-      {
-        pieces.push_back(std::move(c));
-        outcomes.push_back(outcome);
-        continue;
-      }
-      Early_look look{ &early_look, Early_judgement() };
-      outcome = parameterize_chart(m, c, requested, use_fallback, needs_split.on_invalid_map(), &look);
-      double excess = 0.;
-      if(task.faces.size() == 1 || !needs_split(c, outcome, excess, look.ended))
-      {
-        pieces.push_back(std::move(c));
-        outcomes.push_back(outcome);
-        continue;
-      }
-      {
-        std::vector<Index> sorted = task.faces;
-        std::sort(sorted.begin(), sorted.end());
-        rejected.push_back(region_key(sorted));
-      }
-      if(outcome.valid)
-      {
-        const double density = needs_split.excess_density(excess, area);
-        stack.push_back(Task{ std::move(task.faces), density, true,
-                              std::make_shared<const std::pair<Chart, Chart_outcome> >(std::move(c), outcome) });
-      }
-      else
-        stack.push_back(Task{ std::move(task.faces), task.excess_density, true, task.parent });
-      continue;
-    }
-
-    // Never valid as a whole, and Voronoi cells of zero arcs split it
-    // slowly: single faces at once.
-    if(m.at_one_point(task.faces))
-    {
-      for(Index f : task.faces)
-      {
-        Chart c = make_chart(m, std::vector<Index>(1, f));
-        outcomes.push_back(parameterize_chart(m, c, requested, use_fallback));
-        pieces.push_back(std::move(c));
-      }
-      continue;
-    }
-    // More than two cells when the faces have more than two components (a
-    // patch that is not a disk, with require_disk_patches(false)).
-    // Under a bound, a region with a cone point inside (see
-    // smallest_cone_defect) is split by two seeds on opposite sides of its
-    // sharpest one instead.
-    std::size_t seeds = 0;
-    if(needs_split.curvature != nullptr)
-    {
-      double defect = 0.;
-      const Index cone = needs_split.curvature->sharpest_interior_vertex(m, task.faces, defect);
-      if(cone != no_index && std::abs(defect) > smallest_cone_defect)
-      {
-        const std::vector<Index> sides = opposite_faces_around(m, task.faces, cone);
-        if(sides.size() == 2 && splitter.fps.run_from_seeds(task.faces, sides))
-          seeds = 2;
-      }
-    }
-    if(seeds == 0)
-      seeds = splitter.fps.run(task.faces, 2).size();
-    std::vector<std::vector<Index> > cells(seeds);
-    for(Index f : task.faces)
-      cells[splitter.fps.cell(f)].push_back(f);
-    std::vector<std::vector<Index> > parts =
-      refine_region_list(splitter.topology, splitter.fps, std::move(cells), 5);
-    if(needs_split.smoother != nullptr)
-      smooth_parts(*needs_split.smoother, splitter, task.faces, parts);
-    for(std::size_t i = parts.size(); i-- > 0;)
-      stack.push_back(Task{ std::move(parts[i]), task.excess_density, false, task.parent });
-  }
+  std::vector<Split_task> tasks;
+  tasks.push_back(Split_task{ faces, excess_density, true, std::move(parent), std::vector<std::size_t>() });
+  for_each_growing(std::move(tasks), 1, [&](Split_task& task, const auto& add) {
+    split_step(m, splitter, task, requested, use_fallback, needs_split, early_look, add,
+               [&](std::vector<std::size_t>, Chart&& c, const Chart_outcome& outcome) {
+                 pieces.push_back(std::move(c));
+                 outcomes.push_back(outcome);
+               },
+               [&](std::uint64_t key) { rejected.push_back(key); });
+  });
 }
 
 // One Splitter per thread (both members keep per-query scratch state the
@@ -674,6 +695,33 @@ struct Chart_candidate
   static constexpr std::size_t no_node = std::size_t(-1);
 };
 
+// A task of the top-down choice (see parameterize_indexed_patches()): a
+// candidate of the merge tree (or a whole patch), or, `in_split`, a region
+// of the split below the rejected leaf `candidate`.
+struct Descent_task
+{
+  Chart_candidate candidate;
+  bool in_split;
+  Split_task region;
+};
+
+// Where a kept chart comes in the merges' order: the charts the tree gave,
+// level by level (tree depth, then patch and path), then the pieces of the
+// splits, by the depth, patch and path of their leaf and then in the order
+// of a recursion (their path).
+struct Descent_order
+{
+  bool in_split;
+  std::size_t depth;
+  std::size_t patch;
+  std::vector<std::size_t> path;
+
+  bool operator<(const Descent_order& o) const
+  {
+    return std::tie(in_split, depth, patch, path) < std::tie(o.in_split, o.depth, o.patch, o.path);
+  }
+};
+
 // Faces of every node's leaves, gathered from the tree (or the patches).
 class Candidate_faces
 {
@@ -813,20 +861,23 @@ Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, con
       throw Input_error("patch " + std::to_string(p) + " is not a topological disk");
   }
 
-  // Charts are chosen top-down in waves: every candidate of a wave is
-  // parameterized (in parallel); one that is invalid or exceeds the bound
-  // is replaced, in the next wave, by its two children in the merge tree;
-  // a rejected leaf (or patch, without a tree) is split by Voronoi cells
-  // (see Split_rule). Candidates do not depend on each other, so the
-  // charts do not depend on the schedule.
-  std::vector<internal::Chart_candidate> wave;
+  // Charts are chosen top-down: every candidate is parameterized; one that
+  // is invalid or exceeds the bound is replaced by its two children in the
+  // merge tree, and a rejected leaf (or patch, without a tree) is split by
+  // Voronoi cells (see Split_rule). Candidates do not depend on each other,
+  // so each is a task that runs as soon as a thread is free, and the
+  // charts, ordered by their place in the tree at the end, do not depend
+  // on the schedule.
+  std::vector<internal::Descent_task> roots;
   {
-    std::vector<std::size_t> roots;
+    std::vector<std::size_t> tree_roots;
     if(tree != nullptr)
-      roots = internal::patch_roots(*tree, ids, number_of_patches);
-    for(std::size_t p = 0; p < number_of_patches; ++p)
-      wave.push_back(internal::Chart_candidate{ p, tree != nullptr ? roots[p] : internal::Chart_candidate::no_node,
-                                                std::vector<std::size_t>(), 0. });
+      tree_roots = internal::patch_roots(*tree, ids, number_of_patches);
+    for(std::size_t p : internal::largest_first(number_of_patches, [&](std::size_t q) { return patch_faces[q].size(); }))
+      roots.push_back(internal::Descent_task{
+        internal::Chart_candidate{ p, tree != nullptr ? tree_roots[p] : internal::Chart_candidate::no_node,
+                                   std::vector<std::size_t>(), 0. },
+        false, internal::Split_task() });
   }
   const internal::Candidate_faces candidate_faces(tree, patch_faces);
   const internal::Border_smoother smoother(m);
@@ -841,110 +892,99 @@ Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, con
   internal::Progress progress = internal::Progress::from(np);
   const internal::Arap_early_look early_look = needs_split.early_look();
 
-  std::vector<internal::Kept_chart> kept;
   // Why the requested method's chart of each patch as a whole was rejected.
   std::vector<std::string> patch_problem(number_of_patches);
-  std::vector<internal::Chart_candidate> to_split;
-  std::size_t settled = 0;
   // Regions rejected, parameterized or predicted over the bound (see
   // region_key()).
   std::unordered_set<std::uint64_t> rejected_regions;
-  // Waves: each goes one level down the tree, at most its height.
-  while(!wave.empty())
-  {
-    std::vector<std::vector<Index> > faces(wave.size());
-    for(std::size_t i = 0; i < wave.size(); ++i)
-      faces[i] = candidate_faces(wave[i]);
-    std::vector<internal::Chart> charts(wave.size());
-    std::vector<internal::Chart_outcome> outcomes(wave.size());
-    std::vector<char> accepted(wave.size(), 0), too_curved(wave.size(), 0);
-    // Largest candidates first, so that threads end together.
-    auto candidate_size = [&](std::size_t i) { return faces[i].size(); };
-    internal::for_each_largest_first(for_each, wave.size(), candidate_size, [&](std::size_t i) {
-      const double area = internal::region_area(m, faces[i]);
-      if(needs_split.too_large(faces[i].size()) ||
-         needs_split.predicted_over_bound(wave[i].excess_density, area, faces[i].size()))
-        return;
-      if(needs_split.predicted_too_curved(faces[i]))
-      {
-        too_curved[i] = 1;
-        return;
-      }
-      charts[i] = internal::make_chart(m, faces[i]);
-      if(internal::accept_restriction(wave[i].parent, charts[i], outcomes[i], splitter.local(), needs_split))
-      {
-        accepted[i] = 1;
-        return;
-      }
-      internal::Early_look look{ &early_look, internal::Early_judgement() };
-      outcomes[i] = internal::parameterize_chart(m, charts[i], method, use_fallback, needs_split.on_invalid_map(), &look);
-      double excess = 0.;
-      accepted[i] = (faces[i].size() == 1 || !needs_split(charts[i], outcomes[i], excess, look.ended)) ? 1 : 0;
-      if(!accepted[i] && outcomes[i].valid)
-      {
-        wave[i].excess_density = needs_split.excess_density(excess, area);
-        wave[i].parent = std::make_shared<const std::pair<internal::Chart, internal::Chart_outcome> >(
-          std::move(charts[i]), outcomes[i]);
-      }
-    });
-
-    std::vector<internal::Chart_candidate> next;
-    for(std::size_t i = 0; i < wave.size(); ++i)
+  std::vector<std::pair<internal::Descent_order, internal::Kept_chart> > found;
+  std::mutex found_mutex;
+  auto keep = [&](const internal::Chart_candidate& c, bool in_split, std::vector<std::size_t> path,
+                  internal::Chart&& chart, const internal::Chart_outcome& outcome) {
+    internal::Descent_order order{ in_split, c.path.size(), c.patch, path };
+    std::lock_guard<std::mutex> lock(found_mutex);
+    found.emplace_back(std::move(order), internal::Kept_chart{ c.patch, std::move(path), std::move(chart), outcome });
+  };
+  auto reject = [&](std::uint64_t key) {
+    std::lock_guard<std::mutex> lock(found_mutex);
+    rejected_regions.insert(key);
+  };
+  auto try_candidate = [&](internal::Chart_candidate& c, const auto& add) {
+    const std::vector<Index> faces = candidate_faces(c);
+    internal::Chart chart;
+    internal::Chart_outcome outcome;
+    bool accepted = false, too_curved = false;
+    const double area = internal::region_area(m, faces);
+    if(!needs_split.too_large(faces.size()) &&
+       !needs_split.predicted_over_bound(c.excess_density, area, faces.size()))
     {
-      internal::Chart_candidate& c = wave[i];
-      if(c.path.empty())
-        patch_problem[c.patch] = outcomes[i].problem;
-      if(accepted[i])
+      too_curved = needs_split.predicted_too_curved(faces);
+      if(!too_curved)
       {
-        outcomes[i].problem = patch_problem[c.patch];
-        kept.push_back(internal::Kept_chart{ c.patch, c.path, std::move(charts[i]), outcomes[i] });
-        ++settled;
-        continue;
-      }
-      // A region predicted too curved may still be rebuilt by a merge: the
-      // prediction, unlike a parameterization, can be wrong.
-      if(!too_curved[i])
-        rejected_regions.insert(internal::region_key(faces[i]));
-      if(c.node != internal::Chart_candidate::no_node && !tree->is_leaf(c.node))
-        for(std::size_t j = 0; j < 2; ++j)
+        chart = internal::make_chart(m, faces);
+        accepted = internal::accept_restriction(c.parent, chart, outcome, splitter.local(), needs_split);
+        if(!accepted)
         {
-          internal::Chart_candidate child{ c.patch, tree->children(c.node)[j], c.path, c.excess_density, c.parent };
-          child.path.push_back(j);
-          next.push_back(std::move(child));
+          internal::Early_look look{ &early_look, internal::Early_judgement() };
+          outcome = internal::parameterize_chart(m, chart, method, use_fallback, needs_split.on_invalid_map(), &look);
+          double excess = 0.;
+          accepted = faces.size() == 1 || !needs_split(chart, outcome, excess, look.ended);
+          if(!accepted && outcome.valid)
+          {
+            c.excess_density = needs_split.excess_density(excess, area);
+            c.parent = std::make_shared<const std::pair<internal::Chart, internal::Chart_outcome> >(
+              std::move(chart), outcome);
+          }
         }
-      else
-        to_split.push_back(std::move(c));
-    }
-    progress("parameterization", (std::min)(settled, number_of_patches), number_of_patches);
-    wave.swap(next);
-  }
-
-  // Rejected leaves (and patches) are split by Voronoi cells, in parallel.
-  {
-    std::vector<std::vector<internal::Chart> > pieces(to_split.size());
-    std::vector<std::vector<internal::Chart_outcome> > piece_outcomes(to_split.size());
-    std::vector<std::vector<std::uint64_t> > rejected_pieces(to_split.size());
-    std::vector<std::vector<Index> > split_faces(to_split.size());
-    for(std::size_t i = 0; i < to_split.size(); ++i)
-      split_faces[i] = candidate_faces(to_split[i]);
-    auto leaf_size = [&](std::size_t i) { return split_faces[i].size(); };
-    internal::for_each_largest_first(for_each, to_split.size(), leaf_size, [&](std::size_t i) {
-      internal::split_and_parameterize(m, splitter.local(), split_faces[i], method, use_fallback,
-                                       pieces[i], piece_outcomes[i], needs_split, rejected_pieces[i],
-                                       to_split[i].excess_density, to_split[i].parent);
-    });
-    for(const std::vector<std::uint64_t>& keys : rejected_pieces)
-      rejected_regions.insert(keys.begin(), keys.end());
-    for(std::size_t i = 0; i < to_split.size(); ++i)
-      for(std::size_t j = 0; j < pieces[i].size(); ++j)
-      {
-        std::vector<std::size_t> path = to_split[i].path;
-        path.push_back(j);
-        piece_outcomes[i][j].problem = patch_problem[to_split[i].patch];
-        kept.push_back(
-          internal::Kept_chart{ to_split[i].patch, std::move(path), std::move(pieces[i][j]), piece_outcomes[i][j] });
       }
+    }
+    if(c.path.empty())
+      patch_problem[c.patch] = outcome.problem;  // one task per patch writes it
+    if(accepted)
+    {
+      keep(c, false, c.path, std::move(chart), outcome);
+      progress.step("parameterization", number_of_patches);
+      return;
+    }
+    // A region predicted too curved may still be rebuilt by a merge: the
+    // prediction, unlike a parameterization, can be wrong.
+    if(!too_curved)
+      reject(internal::region_key(faces));
+    if(c.node != internal::Chart_candidate::no_node && !tree->is_leaf(c.node))
+      for(std::size_t j = 0; j < 2; ++j)
+      {
+        internal::Chart_candidate child{ c.patch, tree->children(c.node)[j], c.path, c.excess_density, c.parent };
+        child.path.push_back(j);
+        add(internal::Descent_task{ std::move(child), false, internal::Split_task() });
+      }
+    else if(faces.size() > 1)
+      add(internal::Descent_task{ c, true, internal::Split_task{ faces, c.excess_density, true, c.parent, c.path } });
+  };
+  internal::for_each_growing(std::move(roots), threads, [&](internal::Descent_task& task, const auto& add) {
+    if(!task.in_split)
+    {
+      try_candidate(task.candidate, add);
+      return;
+    }
+    internal::split_step(
+      m, splitter.local(), task.region, method, use_fallback, needs_split, early_look,
+      [&](internal::Split_task&& part) { add(internal::Descent_task{ task.candidate, true, std::move(part) }); },
+      [&](std::vector<std::size_t> path, internal::Chart&& c, const internal::Chart_outcome& outcome) {
+        keep(task.candidate, true, std::move(path), std::move(c), outcome);
+      },
+      reject);
+  });
+  std::sort(found.begin(), found.end(),
+            [](const std::pair<internal::Descent_order, internal::Kept_chart>& a,
+               const std::pair<internal::Descent_order, internal::Kept_chart>& b) { return a.first < b.first; });
+  std::vector<internal::Kept_chart> kept;
+  kept.reserve(found.size());
+  for(auto& f : found)
+  {
+    f.second.outcome.problem = patch_problem[f.second.patch];
+    kept.push_back(std::move(f.second));
   }
+  found.clear();
   if(bounded && settings.merge_charts)
     internal::merge_kept_charts(m, topology, kept, needs_split, method, use_fallback, for_each, rejected_regions);
   if(bounded && settings.straighten_borders)
@@ -1006,6 +1046,11 @@ Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, con
     for(std::size_t p = 0; p < number_of_patches; ++p)
       report.number_of_split_patches += whole[p] ? 0 : 1;
   }
+  // Measured in parallel: distortion is most of the work of this loop,
+  // whose writes to the user's maps stay on one thread.
+  std::vector<internal::Chart_distortion> distortion(charts.size());
+  internal::for_each_largest_first(for_each, charts.size(), [&](std::size_t p) { return charts[p].faces.size(); },
+                                   [&](std::size_t p) { distortion[p] = internal::chart_distortion(m, charts[p]); });
   report.charts.resize(charts.size());
   for(std::size_t p = 0; p < charts.size(); ++p)
   {
@@ -1020,7 +1065,7 @@ Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, con
     r.valid = outcomes[p].valid;
     r.method_error = outcomes[p].method_error;
     r.problem = outcomes[p].problem;
-    const internal::Chart_distortion d = internal::chart_distortion(m, c);
+    const internal::Chart_distortion& d = distortion[p];
     r.angle_distortion = d.angle;
     r.area_distortion = d.area;
     r.max_stretch = d.max_stretch;
@@ -1070,8 +1115,8 @@ Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, con
 /// charts that exceed the distortion bound (`Distortion_bound`; the paper
 /// has none) are replaced the same way: with a `merge_tree`, a patch is
 /// first replaced by the two disks it was merged from, recursively down to
-/// the tree's leaves, which are then split; the candidates of one tree level
-/// are parameterized in parallel. Under a finite bound, a chart of more
+/// the tree's leaves, which are then split; candidates are parameterized
+/// in parallel, each as soon as its parent is rejected. Under a finite bound, a chart of more
 /// than one triangle whose map is invalid is replaced the same way at once,
 /// without the other methods (a map redone on a circle rarely meets the
 /// bound, and it was a third of the time on meshes with such charts).

@@ -6,6 +6,7 @@
 
 #include <CGAL/Disk_segmentation/parameters.h>
 
+#include <algorithm>
 #include <functional>
 #include <mutex>
 #include <string>
@@ -40,13 +41,14 @@ public:
     callback_(stage, done, total);
   }
 
-  // Counts one more unit of `stage` done and reports it.
+  // Counts one more unit of `stage` done and reports it, at most `total`.
   void step(const std::string& stage, std::size_t total)
   {
     if(!callback_)
       return;
     std::lock_guard<std::mutex> lock(mutex_);
-    callback_(stage, ++done_, total);
+    done_ = (std::min)(done_ + 1, total);
+    callback_(stage, done_, total);
   }
 
 private:

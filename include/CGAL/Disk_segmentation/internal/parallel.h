@@ -9,12 +9,14 @@
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_for_each.h>
 #include <tbb/task_arena.h>
 #endif
 
 #include <algorithm>
 #include <atomic>
 #include <cstddef>
+#include <iterator>
 #include <numeric>
 #include <vector>
 
@@ -97,6 +99,39 @@ void for_each_index(std::size_t n, unsigned int threads, const Work& work)
 #endif
   for(std::size_t i = 0; i < n; ++i)
     work(i);
+}
+
+// Runs `work(item, add)` for every item of `items` and every item that a
+// call adds by `add(std::move(next))`, on up to `threads` threads (0: TBB's
+// choice). A thread takes new work as soon as it is free, so work that
+// makes more work (a chart rejected into its pieces) keeps every thread
+// busy without a barrier per level. Without TBB, or with one thread, the
+// last item added runs first (depth first). Each call must touch only its
+// own data; the order of the calls is not fixed.
+template <typename Item, typename Work>
+void for_each_growing(std::vector<Item> items, unsigned int threads, const Work& work)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if(threads != 1)
+  {
+    within_arena(threads, [&] {
+      tbb::parallel_for_each(items.begin(), items.end(), [&](Item& item, tbb::feeder<Item>& feeder) {
+        work(item, [&feeder](Item&& next) { feeder.add(std::move(next)); });
+      });
+    });
+    return;
+  }
+#else
+  CGAL_USE(threads);
+#endif
+  std::vector<Item> stack(std::make_move_iterator(items.rbegin()), std::make_move_iterator(items.rend()));
+  // Ends when the work stops adding items.
+  while(!stack.empty())
+  {
+    Item item = std::move(stack.back());
+    stack.pop_back();
+    work(item, [&stack](Item&& next) { stack.push_back(std::move(next)); });
+  }
 }
 
 // The indices [0, n) by decreasing `size(i)`, equal sizes by index: the
