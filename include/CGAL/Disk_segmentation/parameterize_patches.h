@@ -304,6 +304,46 @@ struct Split_task
   std::vector<std::size_t> path;
 };
 
+// How a region fared when tried as one chart (see try_region()).
+enum class Region_trial
+{
+  kept,              // its chart meets the bound (or it is a single triangle)
+  too_large,         // not parameterized: over the size cap, or predicted over the bound
+  predicted_curved,  // not parameterized: predicted too curved (Split_rule::predicted_too_curved())
+  rejected           // parameterized, and invalid or over the bound
+};
+
+// Tries `faces` as one chart: with the UVs of `parent` when they do, else
+// parameterized. A rejected chart that is valid becomes the `parent` of the
+// region's parts, with its `excess_density`. `chart` and `outcome` are
+// those of a kept chart; `outcome.problem` is also why a rejected one was.
+template <typename NeedsSplit>
+Region_trial try_region(const Indexed_triangle_mesh& m, Splitter& splitter, const std::vector<Index>& faces,
+                        Parameterization_method requested, bool use_fallback, const NeedsSplit& needs_split,
+                        const Arap_early_look& early_look, double& excess_density, Parent_chart& parent,
+                        Chart& chart, Chart_outcome& outcome)
+{
+  const double area = region_area(m, faces);
+  if(needs_split.too_large(faces.size()) || needs_split.predicted_over_bound(excess_density, area, faces.size()))
+    return Region_trial::too_large;
+  if(needs_split.predicted_too_curved(faces))
+    return Region_trial::predicted_curved;
+  chart = make_chart(m, faces);
+  if(accept_restriction(parent, chart, outcome, splitter, needs_split))
+    return Region_trial::kept;
+  Early_look look{ &early_look, Early_judgement() };
+  outcome = parameterize_chart(m, chart, requested, use_fallback, needs_split.on_invalid_map(), &look);
+  double excess = 0.;
+  if(faces.size() == 1 || !needs_split(chart, outcome, excess, look.ended))
+    return Region_trial::kept;
+  if(outcome.valid)
+  {
+    excess_density = needs_split.excess_density(excess, area);
+    parent = std::make_shared<const std::pair<Chart, Chart_outcome> >(std::move(chart), outcome);
+  }
+  return Region_trial::rejected;
+}
+
 // One step of split_and_parameterize(): `task` either is split, and each
 // part is given to `add` (last part first), or is tried as one chart,
 // which `keep(path, chart, outcome)` receives or which, rejected, is given
@@ -323,41 +363,22 @@ void split_step(const Indexed_triangle_mesh& m, Splitter& splitter, Split_task& 
 {
   if(!task.split)
   {
-    const double area = region_area(m, task.faces);
-    if(needs_split.too_large(task.faces.size()) ||
-       needs_split.predicted_over_bound(task.excess_density, area, task.faces.size()) ||
-       needs_split.predicted_too_curved(task.faces))
-    {
-      task.split = true;
-      add(std::move(task));
-      return;
-    }
-    Chart c = make_chart(m, task.faces);
+    Chart c;
     Chart_outcome outcome;
-    if(accept_restriction(task.parent, c, outcome, splitter, needs_split))
+    const Region_trial trial = try_region(m, splitter, task.faces, requested, use_fallback, needs_split, early_look,
+                                          task.excess_density, task.parent, c, outcome);
+    if(trial == Region_trial::kept)
     {
       keep(std::move(task.path), std::move(c), outcome);
       return;
     }
-    Early_look look{ &early_look, Early_judgement() };
-    outcome = parameterize_chart(m, c, requested, use_fallback, needs_split.on_invalid_map(), &look);
-    double excess = 0.;
-    if(task.faces.size() == 1 || !needs_split(c, outcome, excess, look.ended))
-    {
-      keep(std::move(task.path), std::move(c), outcome);
-      return;
-    }
+    if(trial == Region_trial::rejected)
     {
       std::vector<Index> sorted = task.faces;
       std::sort(sorted.begin(), sorted.end());
       reject(region_key(sorted));
     }
     task.split = true;
-    if(outcome.valid)
-    {
-      task.excess_density = needs_split.excess_density(excess, area);
-      task.parent = std::make_shared<const std::pair<Chart, Chart_outcome> >(std::move(c), outcome);
-    }
     add(std::move(task));
     return;
   }
@@ -913,34 +934,12 @@ Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, con
     const std::vector<Index> faces = candidate_faces(c);
     internal::Chart chart;
     internal::Chart_outcome outcome;
-    bool accepted = false, too_curved = false;
-    const double area = internal::region_area(m, faces);
-    if(!needs_split.too_large(faces.size()) &&
-       !needs_split.predicted_over_bound(c.excess_density, area, faces.size()))
-    {
-      too_curved = needs_split.predicted_too_curved(faces);
-      if(!too_curved)
-      {
-        chart = internal::make_chart(m, faces);
-        accepted = internal::accept_restriction(c.parent, chart, outcome, splitter.local(), needs_split);
-        if(!accepted)
-        {
-          internal::Early_look look{ &early_look, internal::Early_judgement() };
-          outcome = internal::parameterize_chart(m, chart, method, use_fallback, needs_split.on_invalid_map(), &look);
-          double excess = 0.;
-          accepted = faces.size() == 1 || !needs_split(chart, outcome, excess, look.ended);
-          if(!accepted && outcome.valid)
-          {
-            c.excess_density = needs_split.excess_density(excess, area);
-            c.parent = std::make_shared<const std::pair<internal::Chart, internal::Chart_outcome> >(
-              std::move(chart), outcome);
-          }
-        }
-      }
-    }
+    const internal::Region_trial trial =
+      internal::try_region(m, splitter.local(), faces, method, use_fallback, needs_split, early_look,
+                           c.excess_density, c.parent, chart, outcome);
     if(c.path.empty())
       patch_problem[c.patch] = outcome.problem;  // one task per patch writes it
-    if(accepted)
+    if(trial == internal::Region_trial::kept)
     {
       keep(c, false, c.path, std::move(chart), outcome);
       progress.step("parameterization", number_of_patches);
@@ -948,7 +947,7 @@ Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, con
     }
     // A region predicted too curved may still be rebuilt by a merge: the
     // prediction, unlike a parameterization, can be wrong.
-    if(!too_curved)
+    if(trial != internal::Region_trial::predicted_curved)
       reject(internal::region_key(faces));
     if(c.node != internal::Chart_candidate::no_node && !tree->is_leaf(c.node))
       for(std::size_t j = 0; j < 2; ++j)
