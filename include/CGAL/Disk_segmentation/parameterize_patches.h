@@ -729,17 +729,16 @@ struct Descent_task
 // Where a kept chart comes in the merges' order: the charts the tree gave,
 // level by level (tree depth, then patch and path), then the pieces of the
 // splits, by the depth, patch and path of their leaf and then in the order
-// of a recursion (their path).
-struct Descent_order
+// of a recursion (their path, which extends the leaf's).
+struct Found_chart
 {
   bool in_split;
-  std::size_t depth;
-  std::size_t patch;
-  std::vector<std::size_t> path;
+  std::size_t depth;  // of the tree candidate the chart comes from
+  Kept_chart kept;
 
-  bool operator<(const Descent_order& o) const
+  bool operator<(const Found_chart& o) const
   {
-    return std::tie(in_split, depth, patch, path) < std::tie(o.in_split, o.depth, o.patch, o.path);
+    return std::tie(in_split, depth, kept.patch, kept.path) < std::tie(o.in_split, o.depth, o.kept.patch, o.kept.path);
   }
 };
 
@@ -918,13 +917,14 @@ Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, con
   // Regions rejected, parameterized or predicted over the bound (see
   // region_key()).
   std::unordered_set<std::uint64_t> rejected_regions;
-  std::vector<std::pair<internal::Descent_order, internal::Kept_chart> > found;
+  std::vector<internal::Found_chart> found;
   std::mutex found_mutex;
   auto keep = [&](const internal::Chart_candidate& c, bool in_split, std::vector<std::size_t> path,
                   internal::Chart&& chart, const internal::Chart_outcome& outcome) {
-    internal::Descent_order order{ in_split, c.path.size(), c.patch, path };
+    internal::Found_chart chart_found{ in_split, c.path.size(),
+                                       internal::Kept_chart{ c.patch, std::move(path), std::move(chart), outcome } };
     std::lock_guard<std::mutex> lock(found_mutex);
-    found.emplace_back(std::move(order), internal::Kept_chart{ c.patch, std::move(path), std::move(chart), outcome });
+    found.push_back(std::move(chart_found));
   };
   auto reject = [&](std::uint64_t key) {
     std::lock_guard<std::mutex> lock(found_mutex);
@@ -973,15 +973,13 @@ Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, con
       },
       reject);
   });
-  std::sort(found.begin(), found.end(),
-            [](const std::pair<internal::Descent_order, internal::Kept_chart>& a,
-               const std::pair<internal::Descent_order, internal::Kept_chart>& b) { return a.first < b.first; });
+  std::sort(found.begin(), found.end());
   std::vector<internal::Kept_chart> kept;
   kept.reserve(found.size());
-  for(auto& f : found)
+  for(internal::Found_chart& f : found)
   {
-    f.second.outcome.problem = patch_problem[f.second.patch];
-    kept.push_back(std::move(f.second));
+    f.kept.outcome.problem = patch_problem[f.kept.patch];
+    kept.push_back(std::move(f.kept));
   }
   found.clear();
   if(bounded && settings.merge_charts)
