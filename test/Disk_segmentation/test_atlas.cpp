@@ -1061,6 +1061,65 @@ TEST(Parameters, ChainsGiveTheSameAtlasInEitherOrder)
             3u);
 }
 
+
+TEST(Atlas, FacesListedInAnotherOrderGiveTheSameAtlas)
+{
+  // The package numbers faces along the surface, not in the order the mesh
+  // lists them: the same triangles listed in another order (here a stride
+  // through the list) must get the same chart and the same UVs at every
+  // corner, up to rounding.
+  const Mesh a = load("elephant.off");
+  TS::Soup soup;
+  for(Mesh::Vertex_index v : a.vertices())
+    soup.points.push_back({{ a.point(v).x(), a.point(v).y(), a.point(v).z() }});
+  std::vector<std::array<std::size_t, 3> > triangles;
+  for(Mesh::Face_index f : a.faces())
+  {
+    std::array<std::size_t, 3> t;
+    int i = 0;
+    for(Mesh::Vertex_index v : CGAL::vertices_around_face(a.halfedge(f), a))
+      t[i++] = std::size_t(v);
+    triangles.push_back(t);
+  }
+  const std::size_t n = triangles.size(), stride = 7919;  // a prime that does not divide n
+  ASSERT_NE(n % stride, 0u);
+  std::vector<std::size_t> position_in_b(n);
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    position_in_b[(k * stride) % n] = k;
+    soup.triangles.push_back(triangles[(k * stride) % n]);
+  }
+  Mesh b;
+  TS::to_mesh(soup, b);
+
+  Mesh a_copy = a;
+  UV_map uv_a = a_copy.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:uv").first;
+  UV_map uv_b = b.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:uv").first;
+  Patch_map patch_a = a_copy.add_property_map<Mesh::Face_index, std::size_t>("f:patch", 0).first;
+  Patch_map patch_b = b.add_property_map<Mesh::Face_index, std::size_t>("f:patch", 0).first;
+  const DS::Atlas_report ra = DS::uv_atlas(a_copy, uv_a, DS::parameters::face_patch_map(patch_a));
+  const DS::Atlas_report rb = DS::uv_atlas(b, uv_b, DS::parameters::face_patch_map(patch_b));
+  ASSERT_EQ(ra.number_of_charts, rb.number_of_charts);
+  std::vector<Mesh::Face_index> faces_b(b.faces().begin(), b.faces().end());
+  std::size_t k = 0;
+  for(Mesh::Face_index fa : a_copy.faces())
+  {
+    const Mesh::Face_index fb = faces_b[position_in_b[k++]];
+    ASSERT_EQ(patch_a[fa], patch_b[fb]);
+    // The corners of fb, by vertex (vertices keep their order in b).
+    std::map<std::size_t, K::Point_2> corner_uv;
+    for(Mesh::Halfedge_index h : CGAL::halfedges_around_face(b.halfedge(fb), b))
+      corner_uv[std::size_t(b.target(h))] = uv_b[h];
+    // Packing sums over the faces in the mesh's order: equal up to rounding.
+    for(Mesh::Halfedge_index h : CGAL::halfedges_around_face(a_copy.halfedge(fa), a_copy))
+    {
+      const K::Point_2 p = corner_uv.at(std::size_t(a_copy.target(h)));
+      ASSERT_NEAR(uv_a[h].x(), p.x(), 1e-9);
+      ASSERT_NEAR(uv_a[h].y(), p.y(), 1e-9);
+    }
+  }
+}
+
 TEST(Atlas, BadParametersAreRejectedBeforeAnythingIsWritten)
 {
   Mesh tm = load("eight.off");

@@ -531,6 +531,48 @@ TEST(Segmentation, PinchedVertexIsCutNotRejected)
   EXPECT_EQ(r.number_of_patches, 2u);
 }
 
+TEST(Segmentation, NoRegionHoldsTwoFansOfAPinchedVertex)
+{
+  // A band around a cylinder, cut along one generator except at its bottom
+  // vertex, which both ends share: the band is edge-connected and pinched
+  // there (two fans). The package cuts the mesh at that vertex internally,
+  // where the whole band would be one disk; no region may keep both fans.
+  const int around = 24, rows = 3;
+  Mesh tm;
+  std::vector<std::vector<Mesh::Vertex_index> > v(around + 1, std::vector<Mesh::Vertex_index>(rows + 1));
+  for(int k = 0; k <= around; ++k)
+    for(int r = 0; r <= rows; ++r)
+    {
+      const double angle = 2 * TS::soup_detail::pi() * k / around;
+      v[k][r] = (k == around && r == 0) ? v[0][0]
+                                        : tm.add_vertex(K::Point_3(std::cos(angle), std::sin(angle), 0.5 * r));
+    }
+  for(int k = 0; k < around; ++k)
+    for(int r = 0; r < rows; ++r)
+    {
+      ASSERT_NE(tm.add_face(v[k][r], v[k + 1][r], v[k + 1][r + 1]), Mesh::null_face());
+      ASSERT_NE(tm.add_face(v[k][r], v[k + 1][r + 1], v[k][r + 1]), Mesh::null_face());
+    }
+  // The whole band is not a disk for the independent checker.
+  Patches<Mesh> whole(tm);
+  for(Mesh::Face_index f : tm.faces()) put(whole.map, f, 0);
+  ASSERT_FALSE(TS::check_disk_partition(tm, whole.map).ok);
+
+  Patches<Mesh> p(tm);
+  EXPECT_GE(DS::segment_into_disks(tm, p.map, DS::parameters::number_of_seeds(1)), 2u);
+  const TS::Partition_report r = TS::check_disk_partition(tm, p.map);
+  EXPECT_TRUE(r.ok) << r.problem;
+
+  // Merging single faces as long as unions stay disks must stop short of
+  // the whole band.
+  Patches<Mesh> q(tm);
+  std::size_t id = 0;
+  for(Mesh::Face_index f : tm.faces()) put(q.map, f, id++);
+  EXPECT_GE(DS::merge_disk_regions(tm, q.map, DS::parameters::merge_threshold(0.)), 2u);
+  const TS::Partition_report rq = TS::check_disk_partition(tm, q.map);
+  EXPECT_TRUE(rq.ok) << rq.problem;
+}
+
 TEST(Errors, NonFiniteCoordinate)
 {
   for(double bad : { std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity() })

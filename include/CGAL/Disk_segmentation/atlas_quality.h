@@ -283,7 +283,7 @@ Atlas_quality atlas_quality(const TriangleMesh& tm, UVMap uv_map, FacePatchMap f
           if(!std::isfinite(uv[f][j][0]) || !std::isfinite(uv[f][j][1]))
           {
             q.failed = true;
-            q.failure_reason = "non-finite UV at face #" + std::to_string(f);
+            q.failure_reason = "non-finite UV at face #" + std::to_string(m.input_position(f));
             return q;
           }
         }

@@ -93,6 +93,30 @@ Merge_tree* merge_tree_parameter(const NamedParameters& np)
                           static_cast<Merge_tree*>(nullptr));
 }
 
+// A Merge_tree lists the leaves of the faces in the order of faces(tm),
+// the indexed mesh in its own (Indexed_triangle_mesh::input_face): from
+// the mesh's order to the input's, in place.
+inline void face_leaves_to_input_order(const Indexed_triangle_mesh& m, Merge_tree& tree)
+{
+  if(m.input_face.empty() || tree.face_leaves.size() != m.number_of_faces())
+    return;
+  std::vector<std::size_t> leaves(tree.face_leaves.size());
+  for(std::size_t f = 0; f < leaves.size(); ++f)
+    leaves[m.input_face[f]] = tree.face_leaves[f];
+  tree.face_leaves.swap(leaves);
+}
+
+// A copy of `tree` with its faces in the indexed mesh's order. A tree of
+// another size is copied as it is, for the checks to name it.
+inline Merge_tree face_leaves_to_mesh_order(const Indexed_triangle_mesh& m, const Merge_tree& tree)
+{
+  Merge_tree out = tree;
+  if(!m.input_face.empty() && tree.face_leaves.size() == m.number_of_faces())
+    for(std::size_t f = 0; f < out.face_leaves.size(); ++f)
+      out.face_leaves[f] = tree.face_leaves[m.input_face[f]];
+  return out;
+}
+
 } // namespace internal
 
 /// \ingroup PkgDiskSegmentationRef
@@ -111,7 +135,7 @@ Merge_tree* merge_tree_parameter(const NamedParameters& np)
 /// so it never yields fewer regions.
 ///
 /// On return, the ids are `0` to the returned value minus one, numbered in
-/// the order of each region's first face in `faces(tm)`.
+/// the order of each region's first face in the package's face order (see \ref DS_FaceOrder).
 ///
 /// @tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
 ///         whose faces are triangles
@@ -133,7 +157,7 @@ Merge_tree* merge_tree_parameter(const NamedParameters& np)
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{merge_tree}
 ///     \cgalParamDescription{receives the merges done (see `Merge_tree`); its leaves are the
-///       regions of `face_patch_map` as given, numbered in the order of their first face in `faces(tm)`}
+///       regions of `face_patch_map` as given, numbered in the order of their first face in the package's face order (see \ref DS_FaceOrder)}
 ///     \cgalParamType{`Merge_tree*`}
 ///     \cgalParamDefault{`nullptr`}
 ///   \cgalParamNEnd
@@ -197,13 +221,16 @@ std::size_t merge_disk_regions(const TriangleMesh& tm,
   for(internal::Index r = 0; r < regions.size(); ++r)
   {
     if(!topology.is_disk(regions[r]))
-      throw Input_error("merge_disk_regions: the region of face #" + std::to_string(regions[r].front()) +
+      throw Input_error("merge_disk_regions: the region of face #" +
+                        std::to_string(m.input_position(regions[r].front())) +
                         " is not a topological disk; run refine_to_topological_disks first");
     for(internal::Index f : regions[r]) labels[f] = r;
   }
 
-  const std::size_t count =
-    internal::merge_regions(m, labels, regions.size(), threshold, internal::merge_tree_parameter(np));
+  Merge_tree* tree = internal::merge_tree_parameter(np);
+  const std::size_t count = internal::merge_regions(m, labels, regions.size(), threshold, tree);
+  if(tree != nullptr)
+    internal::face_leaves_to_input_order(m, *tree);
   internal::write_face_labels(face_handles, labels, face_patch_map);
   return count;
 }

@@ -785,8 +785,8 @@ private:
 
 // The root of every patch in `tree`, after checking that the tree's roots
 // are exactly the patches.
-inline std::vector<std::size_t> patch_roots(const Merge_tree& tree, const std::vector<std::size_t>& face_patches,
-                                            std::size_t number_of_patches)
+inline std::vector<std::size_t> patch_roots(const Indexed_triangle_mesh& m, const Merge_tree& tree,
+                                            const std::vector<std::size_t>& face_patches, std::size_t number_of_patches)
 {
   if(tree.face_leaves.size() != face_patches.size())
     throw Input_error("merge_tree: it has " + std::to_string(tree.face_leaves.size()) + " faces, the mesh " +
@@ -805,7 +805,7 @@ inline std::vector<std::size_t> patch_roots(const Merge_tree& tree, const std::v
   for(std::size_t f = 0; f < face_patches.size(); ++f)
   {
     if(tree.face_leaves[f] >= tree.number_of_leaves)
-      throw Input_error("merge_tree: face #" + std::to_string(f) + " has no leaf");
+      throw Input_error("merge_tree: face #" + std::to_string(m.input_position(Index(f))) + " has no leaf");
     const std::size_t root = tree.root_of_leaf(tree.face_leaves[f], parent);
     const std::size_t p = face_patches[f];
     if(root_of_patch[p] == none && patch_of_root[root] == none)
@@ -814,8 +814,8 @@ inline std::vector<std::size_t> patch_roots(const Merge_tree& tree, const std::v
       patch_of_root[root] = p;
     }
     else if(root_of_patch[p] != root || patch_of_root[root] != p)
-      throw Input_error("merge_tree: its roots are not the patches of face_patch_map (face #" + std::to_string(f) +
-                        ")");
+      throw Input_error("merge_tree: its roots are not the patches of face_patch_map (face #" +
+                        std::to_string(m.input_position(Index(f))) + ")");
   }
   return root_of_patch;
 }
@@ -892,7 +892,7 @@ Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, con
   {
     std::vector<std::size_t> tree_roots;
     if(tree != nullptr)
-      tree_roots = internal::patch_roots(*tree, ids, number_of_patches);
+      tree_roots = internal::patch_roots(m, *tree, ids, number_of_patches);
     for(std::size_t p : internal::largest_first(number_of_patches, [&](std::size_t q) { return patch_faces[q].size(); }))
       roots.push_back(internal::Descent_task{
         internal::Chart_candidate{ p, tree != nullptr ? tree_roots[p] : internal::Chart_candidate::no_node,
@@ -1260,8 +1260,13 @@ Parameterization_report parameterize_patches(const TriangleMesh& tm,
 {
   static_assert(internal::Check_patch_map<FacePatchMap>::value, "");
   static_assert(internal::Check_named_parameters<NamedParameters>::value, "");
-  return internal::parameterize_indexed_patches(tm, internal::Indexed_input<TriangleMesh>(tm, np), face_patch_map,
-                                                uv_map, np, internal::merge_tree_parameter(np));
+  const internal::Indexed_input<TriangleMesh> input(tm, np);
+  const Merge_tree* given = internal::merge_tree_parameter(np);
+  Merge_tree tree;
+  if(given != nullptr)
+    tree = internal::face_leaves_to_mesh_order(input.mesh, *given);
+  return internal::parameterize_indexed_patches(tm, input, face_patch_map, uv_map, np,
+                                                given != nullptr ? &tree : nullptr);
 }
 
 } // namespace Disk_segmentation

@@ -125,7 +125,7 @@ inline std::size_t refine_regions(const Indexed_triangle_mesh& m,
 /// The input regions are the sets of faces with equal values in
 /// `face_patch_map` (any values). On return, the ids are `0` to the returned
 /// value minus one, numbered in the order of each region's first face in
-/// `faces(tm)`.
+/// the package's face order (see \ref DS_FaceOrder).
 ///
 /// @tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
 ///         whose faces are triangles

@@ -88,7 +88,7 @@ Segmentation_steps segment_indexed(const Indexed_triangle_mesh& m, const FaceHan
 /// @param tm a triangle mesh, manifold, without garbage
 /// @param face_patch_map receives the patch id of every face, in `[0, P)`
 ///        where `P` is the returned value, numbered in the order of each
-///        patch's first face in `faces(tm)`
+///        patch's first face in the package's face order (see \ref DS_FaceOrder)
 /// @param np an optional sequence of \ref PkgDiskSegmentationNamedParameters "Named Parameters":
 ///        all those of the three functions (`number_of_seeds`, `first_seed`,
 ///        `random_seed`, `seeds_output_iterator`, `number_of_subsamples`,
@@ -126,10 +126,13 @@ std::size_t segment_into_disks(const TriangleMesh& tm,
   internal::build_indexed_triangle_mesh(tm, np, m, face_handles);
 
   std::vector<internal::Index> labels;
+  Merge_tree* tree = internal::merge_tree_parameter(np);
   const std::size_t count = internal::segment_indexed(
-    m, face_handles, np, labels, internal::merge_tree_parameter(np),
+    m, face_handles, np, labels, tree,
     CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::smooth_borders), false))
     .patches;
+  if(tree != nullptr)
+    internal::face_leaves_to_input_order(m, *tree);
   internal::write_face_labels(face_handles, labels, face_patch_map);
   return count;
 }

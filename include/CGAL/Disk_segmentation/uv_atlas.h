@@ -176,6 +176,8 @@ Atlas_report uv_atlas(const TriangleMesh& tm, UVMap uv_map, const NamedParameter
 
     timer.start();
     report.parameterization = internal::parameterize_indexed_patches(tm, input, face_patch_map, uv_map, np, tree);
+    if(tree != &own_tree)
+      internal::face_leaves_to_input_order(input.mesh, *tree);
     report.number_of_charts = report.parameterization.charts.size();
     report.parameterization_seconds = timer.time();
   }

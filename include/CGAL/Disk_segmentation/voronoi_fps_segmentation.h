@@ -127,7 +127,7 @@ void write_seeds(const NamedParameters& np, const std::vector<Index>& seeds, con
 ///   \cgalParamNBegin{first_seed}
 ///     \cgalParamDescription{the first seed of its connected component}
 ///     \cgalParamType{`boost::graph_traits<TriangleMesh>::%face_descriptor`}
-///     \cgalParamDefault{in every component, the face farthest from the component's first face}
+///     \cgalParamDefault{in every component, the face farthest from the component's first face in the package's face order (see \ref DS_FaceOrder)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{random_seed}
 ///     \cgalParamDescription{when given, the first seed of every component (but the one of `first_seed`) is drawn at random with this seed}

@@ -48,7 +48,7 @@ public:
     : m_(m), labels_(labels),
       faces_(number_of_regions), area_(number_of_regions, 0.),
       version_(number_of_regions, 0), shared_length_(number_of_regions),
-      vertex_faces_(m), vertex_mark_(m.number_of_vertices(), 0), node_(number_of_regions)
+      vertex_faces_(m, true), vertex_mark_(m.number_of_vertices(), 0), node_(number_of_regions)
   {
     for(Index r = 0; r < number_of_regions; ++r)
       node_[r] = r;
@@ -154,9 +154,13 @@ private:
       {
         const Index g = m_.neighbors[f][i];
         if(g != no_index && labels_[g] == other)
-          shared_edges_.push_back(m_.edge_vertices(f, i));
+        {
+          const std::pair<Index, Index> e = m_.edge_vertices(f, i);
+          shared_edges_.emplace_back(m_.input_vertex(e.first), m_.input_vertex(e.second));
+        }
 
-        const Index v = m_.corners[f][i];
+        // Vertices as in the input: the fans of a pinched vertex are one.
+        const Index v = m_.input_vertex(m_.corners[f][i]);
         if(vertex_mark_[v] == stamp_)
           continue;
         vertex_mark_[v] = stamp_;
@@ -238,7 +242,7 @@ private:
   std::vector<double> area_;
   std::vector<Index> version_;
   std::vector<std::unordered_map<Index, double> > shared_length_;
-  Vertex_faces vertex_faces_;  // to find the vertices two regions share
+  Vertex_faces vertex_faces_;  // by input vertex: to find the vertices two regions share
   std::vector<Index> vertex_mark_;
   Index stamp_ = 0;
   double threshold_ = 0.;

@@ -55,8 +55,17 @@ struct Indexed_triangle_mesh
   std::vector<Index> face_component;             // face -> component
   std::vector<double> component_unit;            // component -> power of two <= 1
   double normalization_scale = 1;
+  // Faces are renumbered along the surface (see renumber_for_locality()):
+  // face -> its position in the input's face range. Empty: the same.
+  std::vector<Index> input_face;
+  // A pinched vertex of the input is one vertex per fan here (see
+  // split_pinched_vertex()): vertex -> the one that stands for its input
+  // vertex, so that topology is judged on the input. Empty: itself.
+  std::vector<Index> split_from;
 
   std::size_t number_of_faces() const { return corners.size(); }
+  std::size_t input_position(Index f) const { return input_face.empty() ? f : input_face[f]; }
+  Index input_vertex(Index v) const { return split_from.empty() ? v : split_from[v]; }
   std::size_t number_of_vertices() const { return points.size(); }
 
   // What lengths of face f are multiplied by to compare them across components.
@@ -238,7 +247,14 @@ void split_pinched_vertex(Index v,
     {
       copy = static_cast<Index>(m.points.size());
       const std::array<double, 3> p = m.points[v];
+      if(m.split_from.empty())
+      {
+        m.split_from.resize(m.points.size());
+        for(std::size_t i = 0; i < m.split_from.size(); ++i)
+          m.split_from[i] = Index(i);
+      }
       m.points.push_back(p);
+      m.split_from.push_back(m.split_from[v]);
       vertex_handles.push_back(vertex_handles[v]);
     }
     first_fan = false;
@@ -334,6 +350,140 @@ std::size_t check_and_split_vertices(const TriangleMesh& tm,
       std::rotate(n.begin(), n.begin() + first, n.end());
     }
   return m.number_of_vertices() - number_of_vertices;
+}
+
+// Spreads the low 21 bits of x three bits apart (bit i to bit 3i).
+inline std::uint64_t spread_bits_by_three(std::uint64_t x)
+{
+  x &= 0x1fffffull;
+  x = (x | (x << 32)) & 0x1f00000000ffffull;
+  x = (x | (x << 16)) & 0x1f0000ff0000ffull;
+  x = (x | (x << 8)) & 0x100f00f00f00f00full;
+  x = (x | (x << 4)) & 0x10c30c30c30c30c3ull;
+  x = (x | (x << 2)) & 0x1249249249249249ull;
+  return x;
+}
+
+// Renumbers faces along a Morton (Z-order) curve of their centroids, and
+// vertices in order of first use by the renumbered faces: faces close on
+// the surface get close indices. Every pass of the package goes over
+// regions in index order and reads their vertices; in a file's own order a
+// compact region can be spread over the whole index range (CGAL's Loop
+// step keeps one child of face i at i and appends the other three, so
+// after L levels a patch lies in 2^L distant ranges). The order depends on
+// the geometry and on the input order only among faces of one cell of the
+// curve (2^-21 of the bounding box), so atlases barely depend on how the
+// file lists its faces. `face_handles` and `vertex_handles` are permuted
+// alike. Needs finite coordinates (see check_and_split_vertices).
+template <typename FaceHandles, typename VertexHandles>
+void renumber_for_locality(Indexed_triangle_mesh& m, FaceHandles& face_handles, VertexHandles& vertex_handles)
+{
+  constexpr double infinity = std::numeric_limits<double>::infinity();
+  const std::size_t nf = m.number_of_faces(), nv = m.number_of_vertices();
+  std::array<double, 3> lo{{ infinity, infinity, infinity }}, hi{{ -infinity, -infinity, -infinity }};
+  for(const auto& c : m.corners)
+    for(Index v : c)
+      for(int k = 0; k < 3; ++k)
+      {
+        lo[k] = (std::min)(lo[k], m.points[v][k]);
+        hi[k] = (std::max)(hi[k], m.points[v][k]);
+      }
+  // Halves first: the box of coordinates near the double range's ends
+  // would overflow its side.
+  std::array<double, 3> cells_per_half_unit;
+  for(int k = 0; k < 3; ++k)
+  {
+    const double half_side = hi[k] / 2 - lo[k] / 2;
+    cells_per_half_unit[k] = half_side > 0 ? double(1u << 21) / half_side : 0.;
+  }
+  std::vector<std::pair<std::uint64_t, Index> > key(nf);
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    std::uint64_t code = 0;
+    for(int k = 0; k < 3; ++k)
+    {
+      const double sum = m.point(Index(f), 0)[k] / 6 + m.point(Index(f), 1)[k] / 6 + m.point(Index(f), 2)[k] / 6;
+      // A subnormal box side makes the scale infinite: clamp before converting.
+      const double cell = (sum - lo[k] / 2) * cells_per_half_unit[k];
+      const double clamped = cell >= 0 ? (std::min)(cell, double((1u << 21) - 1)) : 0.;
+      code |= spread_bits_by_three(std::uint64_t(clamped)) << k;
+    }
+    key[f] = std::make_pair(code, Index(f));
+  }
+  std::sort(key.begin(), key.end());
+
+  std::vector<Index> new_face(nf);
+  for(std::size_t i = 0; i < nf; ++i)
+    new_face[key[i].second] = Index(i);
+  std::vector<Index> new_vertex(nv, no_index);
+  std::vector<Index> old_vertex;
+  old_vertex.reserve(nv);
+  for(std::size_t i = 0; i < nf; ++i)
+    for(Index v : m.corners[key[i].second])
+      if(new_vertex[v] == no_index)
+      {
+        new_vertex[v] = Index(old_vertex.size());
+        old_vertex.push_back(v);
+      }
+  for(std::size_t v = 0; v < nv; ++v)  // vertices of no face, last
+    if(new_vertex[v] == no_index)
+    {
+      new_vertex[v] = Index(old_vertex.size());
+      old_vertex.push_back(Index(v));
+    }
+
+  std::vector<std::array<Index, 3> > corners(nf), neighbors(nf);
+  FaceHandles faces_in_order;
+  faces_in_order.reserve(nf);
+  for(std::size_t i = 0; i < nf; ++i)
+  {
+    const Index f = key[i].second;
+    std::array<Index, 3> c, n;
+    for(int j = 0; j < 3; ++j)
+    {
+      c[j] = new_vertex[m.corners[f][j]];
+      n[j] = m.neighbors[f][j] == no_index ? no_index : new_face[m.neighbors[f][j]];
+    }
+    // Smallest vertex first again (see Indexed_triangle_mesh).
+    const int first = int(std::min_element(c.begin(), c.end()) - c.begin());
+    for(int j = 0; j < 3; ++j)
+    {
+      corners[i][j] = c[(first + j) % 3];
+      neighbors[i][j] = n[(first + j) % 3];
+    }
+    faces_in_order.push_back(face_handles[f]);
+  }
+  m.corners.swap(corners);
+  m.neighbors.swap(neighbors);
+  face_handles.swap(faces_in_order);
+  m.input_face.resize(nf);
+  for(std::size_t i = 0; i < nf; ++i)
+    m.input_face[i] = key[i].second;
+
+  std::vector<std::array<double, 3> > points(nv);
+  VertexHandles vertices_in_order;
+  vertices_in_order.reserve(nv);
+  for(std::size_t i = 0; i < nv; ++i)
+  {
+    points[i] = m.points[old_vertex[i]];
+    vertices_in_order.push_back(vertex_handles[old_vertex[i]]);
+  }
+  m.points.swap(points);
+  vertex_handles.swap(vertices_in_order);
+  if(!m.split_from.empty())
+  {
+    // The copies of an input vertex all stand for the first of them.
+    std::vector<Index> split_from(nv, no_index);
+    std::vector<Index> stands_for(nv, no_index);  // old representative -> new one
+    for(std::size_t i = 0; i < nv; ++i)
+    {
+      Index& first = stands_for[m.split_from[old_vertex[i]]];
+      if(first == no_index)
+        first = Index(i);
+      split_from[i] = first;
+    }
+    m.split_from.swap(split_from);
+  }
 }
 
 // A power of two 2^k such that `side` * 2^k lies in [1, 2), k bounded so
@@ -472,7 +622,9 @@ auto make_coordinates_reader(const TriangleMesh& tm, const NamedParameters& np)
     return [](vertex_descriptor) { return std::array<double, 3>{{ 0., 0., 0. }}; };
 }
 
-// The whole of `tm` as an indexed mesh, with the face descriptors in index order.
+// The whole of `tm` as an indexed mesh, faces and vertices renumbered along
+// the surface (see renumber_for_locality()), with the face descriptors in
+// index order.
 // `vertex_handles`, when given, receives the vertex descriptors in index order.
 template <typename TriangleMesh, typename NamedParameters>
 void build_indexed_triangle_mesh(const TriangleMesh& tm,
@@ -513,7 +665,8 @@ void build_indexed_triangle_mesh(const TriangleMesh& tm,
     throw Input_error("the face index map is not a bijection onto [0, number of faces)");
 
   // Vertices are numbered in range order (not in order of appearance in
-  // faces, which depends on where each face's halfedge starts).
+  // faces, which depends on where each face's halfedge starts); faces
+  // rotate their corners by it, then both are renumbered along the surface.
   std::vector<Index> dense_vertex(num_vertices(tm), no_index);
   std::vector<vertex_descriptor> vertex_handles;
   vertex_handles.reserve(num_vertices(tm));
@@ -540,6 +693,7 @@ void build_indexed_triangle_mesh(const TriangleMesh& tm,
   std::vector<vertex_descriptor> no_new_vertex;
   build_indexed_triangle_mesh(tm, faces(tm), coordinates_of, face_index_of, vertex_index_of, no_new_vertex, out);
   check_and_split_vertices(tm, vertex_handles, out);
+  renumber_for_locality(out, face_handles, vertex_handles);
   normalize_coordinates(out);
   if(vertex_handles_out != nullptr)
     vertex_handles_out->swap(vertex_handles);

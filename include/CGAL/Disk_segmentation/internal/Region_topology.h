@@ -104,6 +104,23 @@ public:
       if(faces_at_vertex_[v] >= interior_edges + 2)
         c.has_pinched_vertex = true;
     }
+    // Each copy of a pinched input vertex is one of its fans: two of them
+    // in the region are one input vertex, with two fans.
+    if(!m_.split_from.empty())
+    {
+      if(input_vertex_mark_.empty())
+        input_vertex_mark_.assign(m_.number_of_vertices(), 0);
+      for(Index v : touched_vertices_)
+      {
+        Index& mark = input_vertex_mark_[m_.input_vertex(v)];
+        if(mark == stamp)
+        {
+          c.has_pinched_vertex = true;
+          --c.vertices;
+        }
+        mark = stamp;
+      }
+    }
     touched_vertices_.clear();
 
     c.edge_components = count_edge_components(region, stamp);
@@ -121,6 +138,7 @@ private:
       std::fill(face_mark_.begin(), face_mark_.end(), 0);
       std::fill(vertex_mark_.begin(), vertex_mark_.end(), 0);
       std::fill(visit_mark_.begin(), visit_mark_.end(), 0);
+      std::fill(input_vertex_mark_.begin(), input_vertex_mark_.end(), 0);
       stamp_ = 1;
     }
     return stamp_;
@@ -157,7 +175,7 @@ private:
 
   const Indexed_triangle_mesh& m_;
   Index stamp_ = 0;
-  std::vector<Index> face_mark_, vertex_mark_, visit_mark_;
+  std::vector<Index> face_mark_, vertex_mark_, visit_mark_, input_vertex_mark_;
   std::vector<Index> faces_at_vertex_, interior_halfedges_at_vertex_;
   std::vector<Index> touched_vertices_, stack_;
 };
