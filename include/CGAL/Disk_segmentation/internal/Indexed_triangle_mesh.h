@@ -156,6 +156,15 @@ struct Indexed_triangle_mesh
   }
 };
 
+// Rotates a face's corners, and its neighbors alike, so that its smallest
+// vertex index comes first (see Indexed_triangle_mesh); orientation is kept.
+inline void put_smallest_vertex_first(std::array<Index, 3>& corners, std::array<Index, 3>& neighbors)
+{
+  const int first = int(std::min_element(corners.begin(), corners.end()) - corners.begin());
+  std::rotate(corners.begin(), corners.begin() + first, corners.end());
+  std::rotate(neighbors.begin(), neighbors.begin() + first, neighbors.end());
+}
+
 // Builds the faces of the indexed mesh from the faces in `face_range` of
 // `tm`. Faces of the range get indices 0..n-1 in range order; `face_index`
 // must map each of them to that index (`no_index` for faces outside the
@@ -213,11 +222,9 @@ void build_indexed_triangle_mesh(const TriangleMesh& tm,
       throw Input_error("the mesh has a face with fewer than three vertices (face #" +
                         std::to_string(face_counter) + ")");
 
-    int first = 0;
-    for(int i = 1; i < 3; ++i)
-      if(vs[i] < vs[first]) first = i;
-    out.corners.push_back({{ vs[first], vs[(first + 1) % 3], vs[(first + 2) % 3] }});
-    out.neighbors.push_back({{ nbs[first], nbs[(first + 1) % 3], nbs[(first + 2) % 3] }});
+    put_smallest_vertex_first(vs, nbs);
+    out.corners.push_back(vs);
+    out.neighbors.push_back(nbs);
     ++face_counter;
   }
 }
@@ -342,13 +349,7 @@ std::size_t check_and_split_vertices(const TriangleMesh& tm,
   // Faces keep their smallest vertex first (see Indexed_triangle_mesh).
   for(const auto& corners_at_vertex : around)
     for(const std::pair<Index, int>& corner : corners_at_vertex)
-    {
-      auto& c = m.corners[corner.first];
-      auto& n = m.neighbors[corner.first];
-      const int first = int(std::min_element(c.begin(), c.end()) - c.begin());
-      std::rotate(c.begin(), c.begin() + first, c.end());
-      std::rotate(n.begin(), n.begin() + first, n.end());
-    }
+      put_smallest_vertex_first(m.corners[corner.first], m.neighbors[corner.first]);
   return m.number_of_vertices() - number_of_vertices;
 }
 
@@ -438,19 +439,12 @@ void renumber_for_locality(Indexed_triangle_mesh& m, FaceHandles& face_handles, 
   for(std::size_t i = 0; i < nf; ++i)
   {
     const Index f = key[i].second;
-    std::array<Index, 3> c, n;
     for(int j = 0; j < 3; ++j)
     {
-      c[j] = new_vertex[m.corners[f][j]];
-      n[j] = m.neighbors[f][j] == no_index ? no_index : new_face[m.neighbors[f][j]];
+      corners[i][j] = new_vertex[m.corners[f][j]];
+      neighbors[i][j] = m.neighbors[f][j] == no_index ? no_index : new_face[m.neighbors[f][j]];
     }
-    // Smallest vertex first again (see Indexed_triangle_mesh).
-    const int first = int(std::min_element(c.begin(), c.end()) - c.begin());
-    for(int j = 0; j < 3; ++j)
-    {
-      corners[i][j] = c[(first + j) % 3];
-      neighbors[i][j] = n[(first + j) % 3];
-    }
+    put_smallest_vertex_first(corners[i], neighbors[i]);
     faces_in_order.push_back(face_handles[f]);
   }
   m.corners.swap(corners);
