@@ -1289,6 +1289,109 @@ TEST(Atlas, FreeBorderLscmAndArapKeepAPlanarChartUpToASimilarity)
   EXPECT_EQ(similarity_problem(p.m, c, c.uv, 1e-6), "");
 }
 
+TEST(Atlas, ChartsBuiltFromSolvedChartsInheritTheirEliminationOrders)
+{
+  // Two halves of a curved disk get their orders when their solvers'
+  // view is built. Their union inherits one: each vertex once, the first
+  // half's own vertices, then the second's (each in its half's order),
+  // then the shared ones, which separate the others. The solvers eliminate
+  // in that order and find the map a fresh order gives, up to rounding. A
+  // piece of the union inherits the union's order restricted to it.
+  typedef DS::internal::Index Index;
+  Disk_chart p;
+  make_disk_chart(p, [](double x, double y) { return 0.3 * (x * x - y * y) + 0.2 * std::exp(-4. * (x * x + y * y)); });
+  const DS::internal::Indexed_triangle_mesh& m = p.m;
+  std::vector<Index> left, right, all;
+  for(Index f = 0; f < m.number_of_faces(); ++f)
+  {
+    double x = 0.;
+    for(int i = 0; i < 3; ++i)
+      x += m.points[m.corners[f][i]][0];
+    (x < 0. ? left : right).push_back(f);
+    all.push_back(f);
+  }
+  DS::internal::Chart a = DS::internal::make_chart(m, left), b = DS::internal::make_chart(m, right);
+  auto position_in = [](const std::vector<Index>& order) {
+    std::map<Index, std::size_t> at;
+    for(std::size_t k = 0; k < order.size(); ++k)
+      at[order[k]] = k;
+    return at;
+  };
+  auto is_permutation_of_vertices = [](const DS::internal::Chart& c) {
+    std::vector<Index> x = c.elimination_order, y = c.vertices;
+    std::sort(x.begin(), x.end());
+    std::sort(y.begin(), y.end());
+    return x == y;
+  };
+  for(DS::internal::Chart* half : { &a, &b })
+  {
+    ASSERT_TRUE(half->elimination_order.empty());
+    const DS::internal::Chart_geometry g = DS::internal::chart_geometry(m, *half);
+    ASSERT_TRUE(is_permutation_of_vertices(*half));
+    for(std::size_t v = 0; v < half->vertices.size(); ++v)
+      EXPECT_EQ(half->elimination_order[std::size_t(g.elimination_rank[v])], half->vertices[v]);
+  }
+
+  DS::internal::Chart u = DS::internal::make_chart(m, all);
+  DS::internal::inherit_union_order(m, a, b, u);
+  ASSERT_TRUE(is_permutation_of_vertices(u));
+  const std::set<Index> in_a(a.vertices.begin(), a.vertices.end()), in_b(b.vertices.begin(), b.vertices.end());
+  std::map<Index, std::size_t> at_a = position_in(a.elimination_order), at_b = position_in(b.elimination_order);
+  std::size_t shared = 0;
+  for(std::size_t k = 0; k < u.elimination_order.size(); ++k)
+  {
+    const Index v = u.elimination_order[k];
+    const int group = in_a.count(v) && in_b.count(v) ? 2 : (in_a.count(v) ? 0 : 1);
+    shared += group == 2 ? 1 : 0;
+    if(k == 0)
+      continue;
+    const Index w = u.elimination_order[k - 1];
+    const int before = in_a.count(w) && in_b.count(w) ? 2 : (in_a.count(w) ? 0 : 1);
+    ASSERT_LE(before, group) << "vertex " << v;
+    if(before == group)
+    {
+      const std::map<Index, std::size_t>& at = group == 1 ? at_b : at_a;
+      EXPECT_LT(at.at(w), at.at(v)) << "vertex " << v;
+    }
+  }
+  EXPECT_GT(shared, 2u);
+  for(const auto& t : u.triangles)
+  {
+    bool only_a = false, only_b = false;
+    for(Index i : t)
+    {
+      only_a = only_a || !in_b.count(u.vertices[i]);
+      only_b = only_b || !in_a.count(u.vertices[i]);
+    }
+    EXPECT_FALSE(only_a && only_b);
+  }
+
+  const std::vector<Index> inherited = u.elimination_order;
+  const DS::internal::Chart_geometry g = DS::internal::chart_geometry(m, u);
+  EXPECT_EQ(u.elimination_order, inherited);
+  const std::map<Index, std::size_t> at_u = position_in(inherited);
+  for(std::size_t v = 0; v < u.vertices.size(); ++v)
+    EXPECT_EQ(std::size_t(g.elimination_rank[v]), at_u.at(u.vertices[v]));
+  DS::internal::Chart fresh = u;
+  fresh.elimination_order.clear();
+  std::vector<Index> loop;
+  ASSERT_TRUE(DS::internal::arap_from_lscm(m, u, loop));
+  ASSERT_TRUE(DS::internal::arap_from_lscm(m, fresh, loop));
+  EXPECT_NE(fresh.elimination_order, inherited);  // else the comparison below shows nothing
+  for(std::size_t v = 0; v < u.vertices.size(); ++v)
+    for(int i = 0; i < 2; ++i)
+      EXPECT_NEAR(u.uv[v][i], fresh.uv[v][i], 1e-9);
+
+  DS::internal::Chart piece = DS::internal::make_chart(m, left);
+  DS::internal::inherit_restricted_order(m, u, piece);
+  ASSERT_TRUE(is_permutation_of_vertices(piece));
+  for(std::size_t k = 1; k < piece.elimination_order.size(); ++k)
+    EXPECT_LT(at_u.at(piece.elimination_order[k - 1]), at_u.at(piece.elimination_order[k]));
+  DS::internal::Chart outside = DS::internal::make_chart(m, right);
+  DS::internal::inherit_restricted_order(m, a, outside);
+  EXPECT_TRUE(outside.elimination_order.empty());
+}
+
 TEST(Atlas, ArapEndsItsIterationsWhereTheEarlyLookSays)
 {
   // ARAP from LSCM on a curved chart, with a look at the iterate after
@@ -1297,7 +1400,7 @@ TEST(Atlas, ArapEndsItsIterationsWhereTheEarlyLookSays)
   // count, each compared with plain iterations run here for that count.
   Disk_chart p;
   make_disk_chart(p, [](double x, double y) { return 0.3 * (x * x - y * y) + 0.2 * std::exp(-4. * (x * x + y * y)); });
-  const DS::internal::Chart c = whole_chart(p);
+  DS::internal::Chart c = whole_chart(p);
   const std::vector<DS::internal::Index> border = DS::internal::chart_border_loop(c);
   ASSERT_FALSE(border.empty());
   const DS::internal::Chart_geometry g = DS::internal::chart_geometry(p.m, c);
@@ -1393,7 +1496,7 @@ TEST(Atlas, FreeBorderLscmIsStationaryForTheConformalEnergyOnACurvedChart)
   Disk_chart p;
   make_disk_chart(p, [](double x, double y) { return 0.3 * (x * x - y * y) + 0.2 * std::exp(-4. * (x * x + y * y)); });
   const DS::internal::Indexed_triangle_mesh& m = p.m;
-  const DS::internal::Chart c = whole_chart(p);
+  DS::internal::Chart c = whole_chart(p);
   const std::vector<DS::internal::Index> border = DS::internal::chart_border_loop(c);
   ASSERT_FALSE(border.empty());
   const DS::internal::Chart_geometry g = DS::internal::chart_geometry(m, c);
@@ -1550,7 +1653,7 @@ TEST(Atlas, ChartEdgesListEveryEdgeOnceAroundBothEnds)
   // once, in increasing order, with the edge that joins them.
   Disk_chart p;
   make_planar_chart(p);
-  const DS::internal::Chart c = whole_chart(p);
+  DS::internal::Chart c = whole_chart(p);
   const DS::internal::Chart_geometry g = DS::internal::chart_geometry(p.m, c);
   const DS::internal::Chart_edges& edges = g.edges;
   std::map<std::pair<std::size_t, std::size_t>, std::size_t> sides;  // -> how many triangles have it

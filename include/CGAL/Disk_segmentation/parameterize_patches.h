@@ -21,6 +21,7 @@
 #include <CGAL/Disk_segmentation/internal/Chart_parameterization.h>
 #include <CGAL/Disk_segmentation/internal/Chart_restriction.h>
 #include <CGAL/Disk_segmentation/internal/Face_partition.h>
+#include <CGAL/Disk_segmentation/internal/Inherited_elimination_order.h>
 #include <CGAL/Disk_segmentation/internal/parallel.h>
 #include <CGAL/Disk_segmentation/internal/Indexed_triangle_mesh.h>
 #include <CGAL/Disk_segmentation/internal/Parameter_checks.h>
@@ -331,6 +332,8 @@ Region_trial try_region(const Indexed_triangle_mesh& m, Splitter& splitter, cons
   chart = make_chart(m, faces);
   if(accept_restriction(parent, chart, outcome, splitter, needs_split))
     return Region_trial::kept;
+  if(parent && has_elimination_order(parent->first))
+    inherit_restricted_order(m, parent->first, chart);
   Early_look look{ &early_look, Early_judgement() };
   outcome = parameterize_chart(m, chart, requested, use_fallback, needs_split.on_invalid_map(), &look);
   double excess = 0.;

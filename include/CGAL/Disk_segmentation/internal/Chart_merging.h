@@ -7,6 +7,7 @@
 #include <CGAL/Disk_segmentation/internal/Chart_distortion.h>
 #include <CGAL/Disk_segmentation/internal/Chart_parameterization.h>
 #include <CGAL/Disk_segmentation/internal/Chart_warm_start.h>
+#include <CGAL/Disk_segmentation/internal/Inherited_elimination_order.h>
 #include <CGAL/Disk_segmentation/internal/Indexed_triangle_mesh.h>
 #include <CGAL/Disk_segmentation/internal/Region_topology.h>
 #include <CGAL/Disk_segmentation/internal/parallel.h>
@@ -169,9 +170,13 @@ std::size_t merge_kept_charts(const Indexed_triangle_mesh& m, Region_topology& t
     auto union_size = [&](std::size_t i) { return round_faces[i].size(); };
     for_each_largest_first(for_each, round.size(), union_size, [&](std::size_t i) {
       unions[i] = make_chart(m, round_faces[i]);
+      const Chart& a = kept[round[i].first].chart;
+      const Chart& b = kept[round[i].second].chart;
+      if(has_elimination_order(a) && has_elimination_order(b))
+        inherit_union_order(m, a, b, unions[i]);
       // ARAP from the two maps glued rather than from LSCM: half the time
       // on the merges, the same charts on 10 meshes of CGAL's data.
-      const Chart_uv start = glue_chart_maps(kept[round[i].first].chart, kept[round[i].second].chart, unions[i]);
+      const Chart_uv start = glue_chart_maps(a, b, unions[i]);
       if(!start.empty() && rule.glued_too_concave(unions[i], start))
         return;
       Early_look look{ &early_look, Early_judgement() };

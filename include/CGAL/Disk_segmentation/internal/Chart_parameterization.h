@@ -45,6 +45,10 @@ struct Chart
   std::vector<Index> vertices;                  // local vertex -> indexed-mesh vertex
   std::vector<std::array<Index, 3> > triangles; // local corners of each face
   std::vector<std::array<double, 2> > uv;       // local vertex -> UV
+  // Its indexed-mesh vertices in the order the solvers eliminate them:
+  // recorded when the chart is first solved, or inherited from the charts
+  // it was built from (see Inherited_elimination_order.h); empty until then.
+  std::vector<Index> elimination_order;
 };
 
 // Local vertices are numbered as first met, through a per-thread slot per
@@ -337,7 +341,10 @@ std::string run_parameterizer(Chart_mesh& mesh, Parameterizer parameterizer,
   return std::string();
 }
 
-inline Chart_geometry chart_geometry(const Indexed_triangle_mesh& m, const Chart& c)
+// The solvers' view of `c`, eliminating its vertices in
+// `c.elimination_order` when it has one, else in a fill-reducing order
+// computed now and recorded there, for the charts built from `c`.
+inline Chart_geometry chart_geometry(const Indexed_triangle_mesh& m, Chart& c)
 {
   std::vector<std::array<double, 3> > points;
   points.reserve(c.vertices.size());
@@ -347,7 +354,34 @@ inline Chart_geometry chart_geometry(const Indexed_triangle_mesh& m, const Chart
   triangles.reserve(c.triangles.size());
   for(const auto& t : c.triangles)
     triangles.push_back({{ t[0], t[1], t[2] }});
-  return Chart_geometry(std::move(points), std::move(triangles));
+  const std::size_t n = c.vertices.size();
+  std::vector<Eigen::Index> rank;
+  if(c.elimination_order.size() == n)
+  {
+    // Local vertex of each mesh vertex, through a per-thread slot per mesh
+    // vertex as make_chart() does, left all no_index.
+    thread_local std::vector<Index> slot;
+    if(slot.size() < m.number_of_vertices())
+      slot.assign(m.number_of_vertices(), no_index);
+    for(Index v = 0; v < n; ++v)
+      slot[c.vertices[v]] = v;
+    rank.resize(n);
+    for(std::size_t k = 0; k < n; ++k)
+    {
+      CGAL_assertion(slot[c.elimination_order[k]] != no_index);
+      rank[slot[c.elimination_order[k]]] = Eigen::Index(k);
+    }
+    for(Index v : c.vertices)
+      slot[v] = no_index;
+  }
+  Chart_geometry g(std::move(points), std::move(triangles), std::move(rank));
+  if(c.elimination_order.size() != n)
+  {
+    c.elimination_order.resize(n);
+    for(std::size_t v = 0; v < n; ++v)
+      c.elimination_order[std::size_t(g.elimination_rank[v])] = c.vertices[v];
+  }
+  return g;
 }
 
 // What a look at an early ARAP iterate of a chart says of the iterations

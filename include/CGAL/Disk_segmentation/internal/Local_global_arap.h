@@ -285,8 +285,9 @@ inline bool isometric_frames(const std::vector<std::array<double, 3> >& points,
 }
 
 // A chart's 3D positions, its triangles (counterclockwise), their edges
-// and the elimination rank of its vertices, as the LSCM and ARAP solvers
-// take them, with what both read of the geometry, computed once per chart:
+// and the elimination rank of its vertices (given, or computed by
+// vertex_elimination_rank()), as the LSCM and ARAP solvers take them, with
+// what both read of the geometry, computed once per chart:
 // each triangle in its own plane with its cotangents (see
 // isometric_frames(); `has_frames` is false if a triangle has a zero edge
 // or no area), the edges' cotangent weights and their sums around the
@@ -303,11 +304,13 @@ struct Chart_geometry
   bool has_frames = false;
 
   Chart_geometry() = default;
-  Chart_geometry(std::vector<std::array<double, 3> > p, std::vector<std::array<std::size_t, 3> > t)
-    : points(std::move(p)), triangles(std::move(t))
+  Chart_geometry(std::vector<std::array<double, 3> > p, std::vector<std::array<std::size_t, 3> > t,
+                 std::vector<Eigen::Index> rank = std::vector<Eigen::Index>())
+    : points(std::move(p)), triangles(std::move(t)), elimination_rank(std::move(rank))
   {
     build_chart_edges(points.size(), triangles, edges);
-    elimination_rank = vertex_elimination_rank(points.size(), edges);
+    if(elimination_rank.size() != points.size())
+      elimination_rank = vertex_elimination_rank(points.size(), edges);
     has_frames = isometric_frames(points, triangles, frames, cot);
     if(has_frames)
       cotangent_weights(edges, cot, edge_weight, vertex_weight);
