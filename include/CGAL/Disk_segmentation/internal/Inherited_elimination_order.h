@@ -32,6 +32,15 @@ inline std::vector<unsigned char>& vertex_marks(const Indexed_triangle_mesh& m)
   return mark;
 }
 
+// Appends to `out` the vertices of `order` marked `value`, in that order.
+inline void append_marked(const std::vector<Index>& order, const std::vector<unsigned char>& mark, unsigned char value,
+                          std::vector<Index>& out)
+{
+  for(Index v : order)
+    if(mark[v] == value)
+      out.push_back(v);
+}
+
 // The order of the union `u` of two solved charts `a` and `b` with
 // elimination orders: the vertices of `a` only, then those of `b` only,
 // each in their chart's order, then the vertices the two share. The shared
@@ -47,15 +56,9 @@ inline void inherit_union_order(const Indexed_triangle_mesh& m, const Chart& a, 
     mark[v] |= 2;
   u.elimination_order.clear();
   u.elimination_order.reserve(u.vertices.size());
-  for(Index v : a.elimination_order)
-    if(mark[v] == 1)
-      u.elimination_order.push_back(v);
-  for(Index v : b.elimination_order)
-    if(mark[v] == 2)
-      u.elimination_order.push_back(v);
-  for(Index v : a.elimination_order)
-    if(mark[v] == 3)
-      u.elimination_order.push_back(v);
+  append_marked(a.elimination_order, mark, 1, u.elimination_order);
+  append_marked(b.elimination_order, mark, 2, u.elimination_order);
+  append_marked(a.elimination_order, mark, 3, u.elimination_order);
   for(Index v : a.elimination_order)
     mark[v] = 0;
   for(Index v : b.elimination_order)
@@ -73,9 +76,7 @@ inline void inherit_restricted_order(const Indexed_triangle_mesh& m, const Chart
     mark[v] = 1;
   piece.elimination_order.clear();
   piece.elimination_order.reserve(piece.vertices.size());
-  for(Index v : whole.elimination_order)
-    if(mark[v] == 1)
-      piece.elimination_order.push_back(v);
+  append_marked(whole.elimination_order, mark, 1, piece.elimination_order);
   for(Index v : piece.vertices)
     mark[v] = 0;
   // A piece that is not inside `whole` solves with an order of its own.
