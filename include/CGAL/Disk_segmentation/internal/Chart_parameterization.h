@@ -51,13 +51,21 @@ struct Chart
   std::vector<Index> elimination_order;
 };
 
-// Local vertices are numbered as first met, through a per-thread slot per
-// mesh vertex (a hash map was 1 % of the time), left all no_index.
-inline Chart make_chart(const Indexed_triangle_mesh& m, const std::vector<Index>& faces)
+// A per-thread slot per mesh vertex, for the local vertex of a chart
+// being built or read (a hash map was 1 % of the time); its users leave it
+// all no_index.
+inline std::vector<Index>& vertex_slots(const Indexed_triangle_mesh& m)
 {
   thread_local std::vector<Index> slot;
   if(slot.size() < m.number_of_vertices())
     slot.assign(m.number_of_vertices(), no_index);
+  return slot;
+}
+
+// Local vertices are numbered as first met (see vertex_slots()).
+inline Chart make_chart(const Indexed_triangle_mesh& m, const std::vector<Index>& faces)
+{
+  std::vector<Index>& slot = vertex_slots(m);
   Chart c;
   auto clear_slots = [&] {
     for(Index v : c.vertices)
@@ -358,11 +366,7 @@ inline Chart_geometry chart_geometry(const Indexed_triangle_mesh& m, Chart& c)
   std::vector<Eigen::Index> rank;
   if(c.elimination_order.size() == n)
   {
-    // Local vertex of each mesh vertex, through a per-thread slot per mesh
-    // vertex as make_chart() does, left all no_index.
-    thread_local std::vector<Index> slot;
-    if(slot.size() < m.number_of_vertices())
-      slot.assign(m.number_of_vertices(), no_index);
+    std::vector<Index>& slot = vertex_slots(m);
     for(Index v = 0; v < n; ++v)
       slot[c.vertices[v]] = v;
     rank.resize(n);
