@@ -14,8 +14,8 @@
 #include "polygon_triangulation.h"
 #include "tool_error.h"
 
+#include <CGAL/Disk_segmentation/IO/internal/Triangle_soup_to_mesh.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Surface_mesh.h>
 
@@ -339,8 +339,7 @@ Read_changes read_triangle_mesh(const std::string& path, Mesh& mesh, const Read_
     read_polygon_soup_from(bytes, ext, path, points, polygons);
   }
   const Read_changes changes = prepare_triangle_soup(points, polygons, options, path);
-  mesh.clear();
-  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+  CGAL::Disk_segmentation::IO::internal::checked_triangle_soup_to_mesh(points, polygons, mesh);
   return changes;
 }
 

@@ -80,7 +80,7 @@ inline Outcome run(const std::uint8_t* data, std::size_t size, Soup_options soup
     const std::string ext = guess_extension(bytes);
     disk_uv::read_polygon_soup_from(bytes, ext, "fuzz input", points, polygons);
     disk_uv::prepare_triangle_soup(points, polygons, options, "fuzz input");
-    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+    CGAL::Disk_segmentation::IO::internal::checked_triangle_soup_to_mesh(points, polygons, mesh);
   }
   catch(const disk_uv::Tool_error&)
   {
