@@ -5,7 +5,6 @@
 #define CGAL_DISK_SEGMENTATION_INTERNAL_BORDER_SMOOTHER_H
 
 #include <CGAL/Disk_segmentation/internal/Indexed_triangle_mesh.h>
-#include <CGAL/Disk_segmentation/internal/Vertex_faces.h>
 
 #include <deque>
 #include <unordered_map>
@@ -25,12 +24,18 @@ namespace internal {
 // Then the face meets B along a path of two edges, so B plus the face is a
 // disk; and it meets the rest of A along one edge, so A minus the face is a
 // disk (the union of two disks is a disk iff they meet along one path, see
-// Disk_region_merger.h, and A is that union). A region never drops below
-// three faces this way: smoothing should not leave slivers as charts.
+// Disk_region_merger.h, and A is that union). The second condition needs no
+// test: the faces across the two edges are B's, so around the apex the face
+// is a fan of A on its own, and A, a disk, has one fan at each vertex.
+// Whether a face is a tooth thus depends on its neighbors only, and a move
+// queues only the moved face's neighbors again: the cost stays linear
+// around a vertex of high valence (walking its faces for each move was
+// quadratic). A region never drops below three faces this way: smoothing
+// should not leave slivers as charts.
 class Border_smoother
 {
 public:
-  explicit Border_smoother(const Indexed_triangle_mesh& m) : m_(m), vertex_faces_(m) {}
+  explicit Border_smoother(const Indexed_triangle_mesh& m) : m_(m) {}
 
   // Moves teeth among the faces of `faces`, whose regions are given by
   // `labels` (indexed by mesh face; faces outside `faces` must have a label
@@ -61,10 +66,9 @@ public:
       ++region_size[b];
       labels[f] = b;
       ++moves;
-      for(Index v : m_.corners[f])
-        for(Index k = vertex_faces_.begin[v]; k < vertex_faces_.begin[v + 1]; ++k)
-          if(labels[vertex_faces_.faces[k]] != no_index)
-            queue.push_back(vertex_faces_.faces[k]);
+      for(Index g : m_.neighbors[f])
+        if(g != no_index && labels[g] != no_index)
+          queue.push_back(g);
     }
     return moves;
   }
@@ -87,11 +91,6 @@ private:
       const Index x = across[(i + 1) % 3], y = across[(i + 2) % 3];
       if(across[i] != a || x != y || x == a || x == no_index)
         continue;
-      // Edge i is kept; the apex is the corner opposite to it.
-      const Index apex = m_.corners[f][(i + 2) % 3];
-      for(Index k = vertex_faces_.begin[apex]; k < vertex_faces_.begin[apex + 1]; ++k)
-        if(vertex_faces_.faces[k] != f && labels[vertex_faces_.faces[k]] == a)
-          return false;
       b = x;
       return true;
     }
@@ -99,7 +98,6 @@ private:
   }
 
   const Indexed_triangle_mesh& m_;
-  Vertex_faces vertex_faces_;
 };
 
 } // namespace internal

@@ -122,8 +122,11 @@ inline std::vector<Index> chart_border_loop(const Chart& c)
       for(int i = 0; i < 3; ++i)
         out[fill[t[i]]++] = t[(i + 1) % 3];
   }
+  // Sorted: a binary search, as a vertex of high valence has many edges.
+  for(std::size_t v = 0; v < nv; ++v)
+    std::sort(out.begin() + first[v], out.begin() + first[v + 1]);
   auto has_edge = [&](Index a, Index b) {
-    return std::find(out.begin() + first[a], out.begin() + first[a + 1], b) != out.begin() + first[a + 1];
+    return std::binary_search(out.begin() + first[a], out.begin() + first[a + 1], b);
   };
   std::vector<Index> next(nv, no_index);
   std::size_t border_edges = 0;

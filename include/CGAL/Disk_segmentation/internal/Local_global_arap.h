@@ -115,6 +115,7 @@ void assemble_upper_triangle(Eigen::Index size, std::size_t non_zeros, const Col
   int* outer = a.outerIndexPtr();
   int* inner = a.innerIndexPtr();
   Scalar* value = a.valuePtr();
+  std::vector<std::pair<int, Scalar> > long_column;
   int next = 0;
   for(Eigen::Index k = 0; k < size; ++k)
   {
@@ -122,16 +123,38 @@ void assemble_upper_triangle(Eigen::Index size, std::size_t non_zeros, const Col
     const int begin = next;
     column(k, [&](Eigen::Index row, Scalar v) {
       CGAL_assertion(row <= k && next < int(non_zeros));
-      // Insertion in row order: a column holds a few entries.
-      int j = next++;
-      for(; j > begin && inner[j - 1] > row; --j)
-      {
-        inner[j] = inner[j - 1];
-        value[j] = value[j - 1];
-      }
-      inner[j] = int(row);
-      value[j] = v;
+      inner[next] = int(row);
+      value[next++] = v;
     });
+    // Row order: insertion for the few entries of most columns, a sort for
+    // the column of a vertex of high valence (insertion was quadratic there).
+    if(next - begin <= 32)
+      for(int i = begin + 1; i < next; ++i)
+      {
+        const int row = inner[i];
+        const Scalar v = value[i];
+        int j = i;
+        for(; j > begin && inner[j - 1] > row; --j)
+        {
+          inner[j] = inner[j - 1];
+          value[j] = value[j - 1];
+        }
+        inner[j] = row;
+        value[j] = v;
+      }
+    else
+    {
+      long_column.clear();
+      for(int i = begin; i < next; ++i)
+        long_column.emplace_back(inner[i], value[i]);
+      std::stable_sort(long_column.begin(), long_column.end(),
+                       [](const auto& x, const auto& y) { return x.first < y.first; });
+      for(int i = begin; i < next; ++i)
+      {
+        inner[i] = long_column[std::size_t(i - begin)].first;
+        value[i] = long_column[std::size_t(i - begin)].second;
+      }
+    }
   }
   outer[size] = next;
   a.resizeNonZeros(next);
