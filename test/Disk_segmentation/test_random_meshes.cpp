@@ -665,3 +665,61 @@ TEST(RandomMeshes, ComponentCollapsedToAPointGivesAValidAtlas)
   TS::soup_detail::append(s, point, 0., 0., 0.);
   expect_every_method_gives_a_valid_atlas(s);
 }
+
+namespace {
+
+// n triangles around an apex at `height` over a unit circle; with `closed`,
+// a second fan around the circle's center closes it (two vertices of
+// valence n).
+TS::Soup cone(std::size_t n, double height, bool closed)
+{
+  TS::Soup s;
+  s.points.push_back({{ 0., 0., height }});
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const double a = 2. * TS::soup_detail::pi() * double(i) / double(n);
+    s.points.push_back({{ std::cos(a), std::sin(a), 0. }});
+  }
+  for(std::size_t i = 0; i < n; ++i)
+    s.triangles.push_back({{ 0, 1 + i, 1 + (i + 1) % n }});
+  if(closed)
+  {
+    s.points.push_back({{ 0., 0., 0. }});
+    for(std::size_t i = 0; i < n; ++i)
+      s.triangles.push_back({{ n + 1, 1 + (i + 1) % n, 1 + i }});
+  }
+  return s;
+}
+
+} // namespace
+
+// Slivers around a vertex of high valence: each border arc, the smoothing
+// and the packers' footprints once walked every face around it.
+TEST(RandomMeshes, AVertexOfHighValenceGivesAValidAtlas)
+{
+  for(const auto& c : { std::make_pair(std::size_t(20000), false), std::make_pair(std::size_t(3000), true) })
+  {
+    SCOPED_TRACE("valence " + std::to_string(c.first) + (c.second ? ", closed cone" : ", open cone"));
+    Mesh tm;
+    TS::to_mesh(cone(c.first, 0.3, c.second), tm);
+    Atlas a;
+    ASSERT_NO_THROW(a = make_atlas(tm, DS::parameters::default_values()));
+    expect_valid_atlas(tm, a, 1024);
+  }
+}
+
+// Small parts beside a large one: each small chart's place was searched
+// from the bottom rows, filled by the large one, again.
+TEST(RandomMeshes, ThousandsOfTinyComponentsBesideALargeOneGiveAValidAtlas)
+{
+  TS::Soup s = TS::torus(120, 40, 100., 30.);
+  for(int i = 0; i < 2000; ++i)
+    add_tetrahedron(s, 150. + 2. * (i % 40), 2. * (i / 40), 0.);
+  Mesh tm;
+  TS::to_mesh(s, tm);
+  Atlas a;
+  ASSERT_NO_THROW(a = make_atlas(tm, DS::parameters::default_values()));
+  expect_valid_atlas(tm, a, 1024);
+  expect_charts_within_components(tm, a);
+  EXPECT_GE(a.report.number_of_charts, 2u * 2000u + 1u);
+}

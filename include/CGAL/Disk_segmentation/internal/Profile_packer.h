@@ -203,22 +203,31 @@ private:
     const long pad = static_cast<long>(pad_);
     std::vector<long> bottom(static_cast<std::size_t>(columns), std::numeric_limits<long>::max());
     std::vector<long> top(static_cast<std::size_t>(columns), 0);
+    // The border edges only: a chart's lowest and highest point over a
+    // column lie on its border. Whole triangles cost their width in
+    // columns each, quadratic for the slivers around a vertex of high
+    // valence.
     for(std::size_t k = 0; k + 2 < chart.number_of_corners; k += 3)
     {
       Packing_point t[3];
       for(int j = 0; j < 3; ++j)
         t[j] = { to_cells * (points[k + j].x - box.xmin), to_cells * (points[k + j].y - box.ymin) };
-      const double xmin = (std::min)(t[0].x, (std::min)(t[1].x, t[2].x));
-      const double xmax = (std::max)(t[0].x, (std::max)(t[1].x, t[2].x));
-      const long c0 = (std::max)(0L, static_cast<long>(std::floor(xmin - slack)));
-      const long c1 = (std::min)(columns - 1, static_cast<long>(std::floor(xmax + slack)));
-      for(long c = c0; c <= c1; ++c)
+      for(int j = 0; j < 3; ++j)
       {
-        double ylo, yhi;
-        if(!triangle_slab_range(t, double(c) - slack, double(c + 1) + slack, ylo, yhi))
+        if(!(chart.border_edges[k / 3] & (1 << j)))
           continue;
-        bottom[c] = (std::min)(bottom[c], static_cast<long>(std::floor(ylo - slack)));
-        top[c] = (std::max)(top[c], static_cast<long>(std::floor(yhi + slack)) + 1);
+        const Packing_point& a = t[j];
+        const Packing_point& b = t[(j + 1) % 3];
+        const long c0 = (std::max)(0L, static_cast<long>(std::floor((std::min)(a.x, b.x) - slack)));
+        const long c1 = (std::min)(columns - 1, static_cast<long>(std::floor((std::max)(a.x, b.x) + slack)));
+        for(long c = c0; c <= c1; ++c)
+        {
+          double ylo, yhi;
+          if(!segment_slab_range(a, b, double(c) - slack, double(c + 1) + slack, ylo, yhi))
+            continue;
+          bottom[c] = (std::min)(bottom[c], static_cast<long>(std::floor(ylo - slack)));
+          top[c] = (std::max)(top[c], static_cast<long>(std::floor(yhi + slack)) + 1);
+        }
       }
     }
     // A chart is connected, so its columns form one run; a column no

@@ -169,30 +169,27 @@ struct Frame_extents
 
 inline Packing_point quarter_turn(const Packing_point& u) { return { -u.y, u.x }; }
 
-// The range [lo, hi] of the y-coordinates of triangle t over the slab
-// left <= x <= right: its corners inside the slab and its edges' crossings
-// of the slab's two sides. Returns false if the triangle misses the slab.
-inline bool triangle_slab_range(const Packing_point* t, double left, double right, double& lo, double& hi)
+// The range [lo, hi] of the y-coordinates of segment ab over the slab
+// left <= x <= right: its ends inside the slab and its crossings of the
+// slab's two sides. Returns false if the segment misses the slab.
+inline bool segment_slab_range(const Packing_point& a, const Packing_point& b, double left, double right,
+                               double& lo, double& hi)
 {
   lo = std::numeric_limits<double>::infinity();
   hi = -lo;
-  for(int j = 0; j < 3; ++j)
-  {
-    const Packing_point& a = t[j];
-    const Packing_point& b = t[(j + 1) % 3];
-    if(a.x >= left && a.x <= right)
+  for(const Packing_point* end : { &a, &b })
+    if(end->x >= left && end->x <= right)
     {
-      lo = (std::min)(lo, a.y);
-      hi = (std::max)(hi, a.y);
+      lo = (std::min)(lo, end->y);
+      hi = (std::max)(hi, end->y);
     }
-    for(double side : { left, right })
-      if((a.x - side) * (b.x - side) < 0)
-      {
-        const double y = a.y + (b.y - a.y) * (side - a.x) / (b.x - a.x);
-        lo = (std::min)(lo, y);
-        hi = (std::max)(hi, y);
-      }
-  }
+  for(double side : { left, right })
+    if((a.x - side) * (b.x - side) < 0)
+    {
+      const double y = a.y + (b.y - a.y) * (side - a.x) / (b.x - a.x);
+      lo = (std::min)(lo, y);
+      hi = (std::max)(hi, y);
+    }
   return lo <= hi;
 }
 
