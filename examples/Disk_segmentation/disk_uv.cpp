@@ -30,6 +30,7 @@
 #include "atlas_report_json.h"
 #include "mesh_io.h"
 #include "output_files.h"
+#include "parameter_names.h"
 
 #include <CGAL/Disk_segmentation.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -296,6 +297,13 @@ int main(int argc, char** argv)
                 << " charts have invalid UVs (run without --no-fallback to repair them)" << std::endl;
       return 1;
     }
+  }
+  catch(const DS::Input_error& e)
+  {
+    display.finish();
+    std::cerr << "disk_uv: error: " << disk_uv::in_user_terms(e.what(), disk_uv::Front_end::command_line)
+              << std::endl;
+    return 1;
   }
   catch(const std::exception& e)
   {

@@ -22,9 +22,13 @@ import os
 from . import _disk_uv
 from ._files import write_atomically
 
-__all__ = ["Atlas", "atlas", "parametrize", "segment", "load", "save_obj", "save_glb"]
+__all__ = ["Atlas", "ArgumentTypeError", "atlas", "parametrize", "segment", "load", "save_obj", "save_glb"]
 
 METHODS = ("arap", "conformal", "lscm", "mvc", "tutte")
+
+# An argument of the wrong type (a method given as a number, a count as a
+# float): a TypeError, and a ValueError as earlier versions raised.
+ArgumentTypeError = _disk_uv.ArgumentTypeError
 
 
 class Atlas:
@@ -152,14 +156,15 @@ def segment(vertices, faces, n=10, k=5, threshold=_disk_uv.default_merge_thresho
 def load(path, repair=False, triangulate=False):
     """Reads a triangle mesh (.off .obj .ply .stl .ts) as (vertices, faces) arrays.
 
-    ``repair`` merges duplicated vertices, drops duplicated and degenerate
-    faces, orients the faces and cuts non-manifold edges and vertices;
-    ``triangulate`` splits polygons. Without them a mesh that needs either
-    is refused with a ``ValueError`` naming the problem.
+    ``path`` is a str, bytes or path-like object; its name need not be
+    UTF-8. ``repair`` merges duplicated vertices, drops duplicated and
+    degenerate faces, orients the faces and cuts non-manifold edges and
+    vertices; ``triangulate`` splits polygons. Without them a mesh that needs
+    either is refused with a ``ValueError`` naming the problem.
     """
-    path = os.fspath(path)
+    path = os.fsencode(path)  # the C++ reader takes the name's bytes, UTF-8 or not
     if not os.path.exists(path):
-        raise FileNotFoundError(path)
+        raise FileNotFoundError(os.fsdecode(path))
     try:
         return _disk_uv.load(path, bool(repair), bool(triangulate))
     except ValueError as error:

@@ -12,18 +12,20 @@
 #include <CGAL/Disk_segmentation.h>
 #include <CGAL/Disk_segmentation/IO/write_atlas_GLB.h>
 #include <CGAL/Disk_segmentation/IO/write_atlas_OBJ.h>
+#include <CGAL/Disk_segmentation/internal/Face_group_moves.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Real_timer.h>
 #include <CGAL/Surface_mesh.h>
 
 #include "atlas_report_json.h"
 #include "mesh_io.h"
+#include "parameter_names.h"
 
 #include <algorithm>
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <numeric>
 #include <sstream>
 #include <string>
 #include <unordered_map>
@@ -48,6 +50,42 @@ struct Bad_argument : std::runtime_error
 {
   using std::runtime_error::runtime_error;
 };
+
+// An argument of the wrong type: raised as disk_uv.ArgumentTypeError, a
+// TypeError that is also a ValueError (what earlier versions raised).
+struct Bad_type : Bad_argument
+{
+  using Bad_argument::Bad_argument;
+};
+
+// Python needs messages in UTF-8; one naming a file whose name is not
+// (bytes from the file system) gets its other bytes as \xNN.
+std::string as_utf8(const std::string& text)
+{
+  std::string out;
+  for(std::size_t i = 0; i < text.size();)
+  {
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    const std::size_t length = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xe ? 3 : (c >> 3) == 0x1e ? 4 : 0;
+    bool valid = length > 0 && i + length <= text.size();
+    for(std::size_t k = 1; valid && k < length; ++k)
+      valid = (static_cast<unsigned char>(text[i + k]) >> 6) == 0x2;
+    if(valid)
+    {
+      out.append(text, i, length);
+      i += length;
+      continue;
+    }
+    static const char hex[] = "0123456789abcdef";
+    out += "\\x";
+    out += hex[c >> 4];
+    out += hex[c & 15];
+    ++i;
+  }
+  return out;
+}
+
+std::string type_name(const py::handle& value) { return py::str(py::type::handle_of(value).attr("__name__")); }
 
 py::array as_numpy_array(const py::handle& object, const char* name)
 {
@@ -142,16 +180,14 @@ Soup soup_from_arrays(const py::handle& vertices_object, const py::handle& faces
 // The mesh keeps the soup's vertex and face order (vertex i, face i).
 void build_mesh(const Soup& soup, Mesh& mesh)
 {
-  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(soup.points, soup.faces, mesh);
-  if(mesh.number_of_faces() != soup.faces.size())
-    throw Bad_argument("the faces do not form a mesh");
+  DS::IO::internal::checked_triangle_soup_to_mesh(soup.points, soup.faces, mesh);
 }
 
 // Integers: Python's and numpy's (anything with __index__), not bools.
 long long integer_option(const py::object& value, const char* name)
 {
   if(py::isinstance<py::bool_>(value) || !PyIndex_Check(value.ptr()))
-    throw Bad_argument(std::string(name) + " must be an integer");
+    throw Bad_type(std::string(name) + " must be an integer, not " + type_name(value));
   const py::int_ integer(py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr())));
   const long long n = PyLong_AsLongLong(integer.ptr());
   if(n == -1 && PyErr_Occurred())
@@ -175,7 +211,7 @@ double real_option(const py::dict& o, const char* name)
 {
   const py::object value = o[name];
   if(py::isinstance<py::bool_>(value) || py::isinstance<py::str>(value) || !PyNumber_Check(value.ptr()))
-    throw Bad_argument(std::string(name) + " must be a number");
+    throw Bad_type(std::string(name) + " must be a number, not " + type_name(value));
   const double x = PyFloat_AsDouble(value.ptr());
   if(x == -1. && PyErr_Occurred())
   {
@@ -183,6 +219,15 @@ double real_option(const py::dict& o, const char* name)
     throw Bad_argument(std::string(name) + " must be a number");
   }
   return x;
+}
+
+// One of the names `choices` lists ("a, b or c"), as a string.
+std::string choice_option(const py::dict& o, const char* name, const char* choices)
+{
+  const py::object value = o[name];
+  if(!py::isinstance<py::str>(value))
+    throw Bad_type(std::string(name) + " must be one of " + choices + " (a string), not " + type_name(value));
+  return value.cast<std::string>();
 }
 
 DS::Distortion_bound bound_from(const py::dict& o, bool& unbounded)
@@ -236,83 +281,40 @@ py::dict atlas_result(const Soup& soup, const Mesh& mesh, const Patch_map& patch
 }
 
 // Polygons of the caller's mesh (faces with the same group id) are made
-// whole: a polygon whose triangles fell into several charts is moved into
-// one of them when both charts stay disks (largest share first). Returns
-// the number of polygons moved and of those left split; ids are then
-// renumbered 0..P-1 in order of first face.
+// whole, in order of their first face: see internal::Face_group_mover.
+// Returns the number of polygons moved and of those left split; ids are
+// then renumbered 0..P-1 in order of first face.
 std::pair<std::size_t, std::size_t> keep_polygons_whole(const Mesh& mesh, const std::vector<std::int64_t>& group,
                                                         std::vector<std::size_t>& ids)
 {
-  std::unordered_map<std::int64_t, std::vector<std::size_t> > polygons;
-  std::vector<std::int64_t> order;
-  for(std::size_t f = 0; f < group.size(); ++f)
+  namespace DSI = CGAL::Disk_segmentation::internal;
+  DSI::Indexed_triangle_mesh m;
+  std::vector<Mesh::Face_index> face_handles;
+  DSI::build_indexed_triangle_mesh(mesh, DS::parameters::default_values(), m, face_handles);
+  std::vector<DSI::Index> indexed(ids.size()), labels(ids.size());
+  for(DSI::Index i = 0; i < face_handles.size(); ++i)
   {
-    std::vector<std::size_t>& faces = polygons[group[f]];
-    if(faces.empty())
-      order.push_back(group[f]);
-    faces.push_back(f);
+    indexed[std::size_t(face_handles[i])] = i;
+    labels[i] = static_cast<DSI::Index>(ids[std::size_t(face_handles[i])]);
   }
-  std::size_t patches = 0;
-  for(std::size_t id : ids)
-    patches = (std::max)(patches, id + 1);
-  std::vector<std::vector<Mesh::Face_index> > members(patches);
-  for(std::size_t f = 0; f < ids.size(); ++f)
-    members[ids[f]].push_back(Mesh::Face_index(static_cast<Mesh::size_type>(f)));
-  auto patch_faces = [&](std::size_t p) {
-    std::vector<Mesh::Face_index> faces;
-    for(Mesh::Face_index f : members[p])
-      if(ids[std::size_t(f)] == p)
-        faces.push_back(f);
-    return faces;
-  };
-  std::size_t moved = 0, left = 0;
-  for(std::int64_t g : order)
+  std::vector<std::size_t> by_group(group.size());
+  std::iota(by_group.begin(), by_group.end(), std::size_t(0));
+  std::stable_sort(by_group.begin(), by_group.end(), [&](std::size_t a, std::size_t b) { return group[a] < group[b]; });
+  std::vector<std::vector<DSI::Index> > groups;
+  for(std::size_t i = 0; i < by_group.size(); ++i)
   {
-    const std::vector<std::size_t>& faces = polygons[g];
-    std::vector<std::pair<std::size_t, std::size_t> > shares;  // (count, patch), sorted: largest share first
-    for(std::size_t f : faces)
-    {
-      auto it = std::find_if(shares.begin(), shares.end(), [&](const auto& s) { return s.second == ids[f]; });
-      if(it == shares.end())
-        shares.emplace_back(1, ids[f]);
-      else
-        ++it->first;
-    }
-    if(shares.size() < 2)
-      continue;
-    std::sort(shares.begin(), shares.end(), [](const auto& a, const auto& b) {
-      return a.first != b.first ? a.first > b.first : a.second < b.second;
-    });
-    std::vector<std::size_t> old_ids;
-    for(std::size_t f : faces)
-      old_ids.push_back(ids[f]);
-    bool done = false;
-    for(const auto& target : shares)
-    {
-      for(std::size_t f : faces)
-      {
-        if(ids[f] != target.second)
-          members[target.second].push_back(Mesh::Face_index(static_cast<Mesh::size_type>(f)));
-        ids[f] = target.second;
-      }
-      bool disks = CGAL::Disk_segmentation::is_topological_disk(patch_faces(target.second), mesh);
-      for(const auto& source : shares)
-        if(disks && source.second != target.second)
-        {
-          const std::vector<Mesh::Face_index> rest = patch_faces(source.second);
-          disks = rest.empty() || CGAL::Disk_segmentation::is_topological_disk(rest, mesh);
-        }
-      if(disks)
-      {
-        done = true;
-        break;
-      }
-      for(std::size_t i = 0; i < faces.size(); ++i)
-        ids[faces[i]] = old_ids[i];
-    }
-    ++(done ? moved : left);
+    if(i == 0 || group[by_group[i]] != group[by_group[i - 1]])
+      groups.emplace_back();
+    groups.back().push_back(indexed[by_group[i]]);
   }
-  std::vector<std::size_t> renumber(patches, std::size_t(-1));
+  // In order of first face: each list starts with its group's first face.
+  std::sort(groups.begin(), groups.end(), [&](const auto& a, const auto& b) {
+    return std::size_t(face_handles[a.front()]) < std::size_t(face_handles[b.front()]);
+  });
+  const DSI::Face_group_moves moves = DSI::keep_face_groups_whole(m, groups, labels);
+  for(DSI::Index i = 0; i < face_handles.size(); ++i)
+    ids[std::size_t(face_handles[i])] = labels[i];
+  std::vector<std::size_t> renumber(ids.size(), std::size_t(-1));
   std::size_t next = 0;
   for(std::size_t& id : ids)
   {
@@ -320,7 +322,7 @@ std::pair<std::size_t, std::size_t> keep_polygons_whole(const Mesh& mesh, const 
       renumber[id] = next++;
     id = renumber[id];
   }
-  return std::make_pair(moved, left);
+  return std::make_pair(moves.moved, moves.left);
 }
 
 py::dict run_atlas(const py::handle& vertices, const py::handle& faces, const py::dict& o)
@@ -336,13 +338,21 @@ py::dict run_atlas(const py::handle& vertices, const py::handle& faces, const py
   }
   bool unbounded = false;
   const DS::Distortion_bound bound = bound_from(o, unbounded);
-  const std::string method_name = o["method"].cast<std::string>();
-  const std::string packer_name = o["packer"].cast<std::string>();
-  const DS::Parameterization_method method = DS::parameterization_method_from_string(method_name);
+  const std::string method_name = choice_option(o, "method", "arap, conformal, lscm, mvc or tutte");
+  const std::string packer_name = choice_option(o, "packer", "tight or grid");
+  DS::Parameterization_method method;
+  try
+  {
+    method = DS::parameterization_method_from_string(method_name);
+  }
+  catch(const DS::Input_error& e)
+  {
+    throw Bad_argument(std::string("method: ") + e.what());
+  }
   DS::Packing_method packer;
   if(packer_name == "tight") packer = DS::Packing_method::TIGHT;
   else if(packer_name == "grid") packer = DS::Packing_method::GRID;
-  else throw Bad_argument("unknown packer '" + packer_name + "' (expected tight or grid)");
+  else throw Bad_argument("packer: unknown packer '" + packer_name + "' (expected tight or grid)");
   const std::size_t resolution = count_option(o, "resolution");
   if(resolution > std::numeric_limits<unsigned int>::max())
     throw Bad_argument("resolution is too large");
@@ -558,23 +568,30 @@ py::bytes atlas_file(const std::string& format, const py::handle& vertices, cons
 PYBIND11_MODULE(_disk_uv, m)
 {
   m.doc() = "Compiled part of disk_uv (use the disk_uv package)";
+  static py::exception<Bad_type> argument_type_error(m, "ArgumentTypeError",
+                                                      py::make_tuple(py::handle(PyExc_TypeError), py::handle(PyExc_ValueError)));
   py::register_exception_translator([](std::exception_ptr p) {
     try
     {
       if(p)
         std::rethrow_exception(p);
     }
+    catch(const Bad_type& e)
+    {
+      argument_type_error(as_utf8(e.what()).c_str());
+    }
     catch(const Bad_argument& e)
     {
-      PyErr_SetString(PyExc_ValueError, e.what());
+      PyErr_SetString(PyExc_ValueError, as_utf8(e.what()).c_str());
     }
     catch(const DS::Input_error& e)
     {
-      PyErr_SetString(PyExc_ValueError, e.what());
+      PyErr_SetString(PyExc_ValueError,
+                      as_utf8(disk_uv::in_user_terms(e.what(), disk_uv::Front_end::python)).c_str());
     }
     catch(const disk_uv::Tool_error& e)
     {
-      PyErr_SetString(PyExc_ValueError, e.what());
+      PyErr_SetString(PyExc_ValueError, as_utf8(e.what()).c_str());
     }
   });
   m.def("atlas", &run_atlas, py::arg("vertices"), py::arg("faces"), py::arg("options"));

@@ -120,6 +120,22 @@ def test_polygons_stay_whole_when_face_groups_are_given():
     assert atlas_problems(list(atlas.uvs)) == []
 
 
+def test_large_face_groups_over_many_charts_leave_every_chart_a_disk():
+    # Bands of a torus cut into thousands of charts: moving a band tested
+    # every chart whole for every target (4.9 s and 200 MB on 11k faces).
+    vertices, faces, _ = torus_quads(48, 24)
+    bands = numpy.arange(len(faces)) * 4 // len(faces)
+    atlas = disk_uv.atlas(vertices, faces, method="conformal", face_groups=bands, threads=1)
+    polygons = atlas.report["polygons"]
+    across = sum(len(numpy.unique(atlas.chart_ids[bands == g])) > 1 for g in range(4))
+    assert polygons["left_across_charts"] == across
+    assert polygons["moved_whole_into_one_chart"] + across <= 4
+    for chart in numpy.unique(atlas.chart_ids):
+        chart_faces = faces[atlas.chart_ids == chart]
+        assert euler_characteristic(chart_faces) == 1 and len(numpy.unique(components(chart_faces))) == 1
+    assert atlas_problems(list(atlas.uvs)) == []
+
+
 def test_gil_is_released_during_the_computation():
     vertices, faces = mesh("elephant.off")
     done = threading.Event()
@@ -207,6 +223,38 @@ def test_bad_options_raise_value_error(options, message):
     vertices, faces = mesh("eight.off")
     with pytest.raises(ValueError, match=message):
         disk_uv.atlas(vertices, faces, **options)
+
+
+@pytest.mark.parametrize("options, names", [
+    ({"method": 5}, ("method", "arap, conformal, lscm, mvc or tutte", "int")),
+    ({"method": None}, ("method", "arap", "NoneType")),
+    ({"packer": 1.5}, ("packer", "tight or grid", "float")),
+    ({"resolution": 512.0}, ("resolution", "integer", "float")),
+    ({"padding": "2"}, ("padding", "number", "str")),
+])
+def test_arguments_of_the_wrong_type_raise_a_type_error_naming_them(options, names):
+    vertices, faces = mesh("eight.off")
+    with pytest.raises(disk_uv.ArgumentTypeError) as raised:
+        disk_uv.atlas(vertices, faces, **options)
+    assert isinstance(raised.value, TypeError) and isinstance(raised.value, ValueError)
+    for name in names:
+        assert name in str(raised.value)
+
+
+@pytest.mark.parametrize("options, message", [
+    ({"resolution": 8, "padding": 3}, r"^padding \(3\) is too large"),
+    ({"max_stretch": 0.5}, r"^max_stretch must be > 1"),
+    ({"n": 0}, r"^n \(seeds\) must be at least 1"),
+    ({"k": 1}, r"^k \(subsamples\) must be at least 2"),
+    ({"threshold": -1.0}, r"^threshold must be"),
+])
+def test_errors_name_the_arguments_as_given(options, message):
+    vertices, faces = mesh("eight.off")
+    with pytest.raises(ValueError, match=message) as raised:
+        disk_uv.atlas(vertices, faces, **options)
+    for library_name in ("pack_patches", "padding_in_texels", "texture_resolution", "number_of_seeds",
+                         "number_of_subsamples", "merge_threshold"):
+        assert library_name not in str(raised.value)
 
 
 def test_numpy_only_example_runs(tmp_path):

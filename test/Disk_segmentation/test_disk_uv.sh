@@ -80,12 +80,12 @@ expect_error 1 "4 vertices" "$work/quad.off"
 expect_error 1 "refers to vertex|not a valid" "$work/badindex.off"
 expect_error 1 "not manifold" "$work/nonmanifold_edge.off"
 expect_error 1 "oriented inconsistently" "$work/flipped.off"
-expect_error 1 "number_of_seeds" "$data/elephant.off" -n 0
-expect_error 1 "number_of_subsamples" "$data/elephant.off" -k 1
-expect_error 1 "merge_threshold" "$data/elephant.off" --threshold -1
+expect_error 1 "-n/--seeds must be at least 1" "$data/elephant.off" -n 0
+expect_error 1 "-k/--subsamples must be at least 2" "$data/elephant.off" -k 1
+expect_error 1 "--threshold must be" "$data/elephant.off" --threshold -1
 expect_error 1 "unknown parameterization method" "$data/elephant.off" --method harmonic2
 expect_error 1 "unknown packer" "$data/elephant.off" --packer best
-expect_error 1 "texture_resolution" "$data/elephant.off" --resolution 0
+expect_error 1 "--resolution must be at least 1" "$data/elephant.off" --resolution 0
 expect_error 1 "padding" "$data/elephant.off" --padding -3
 expect_error 2 "" "$data/elephant.off" -n abc
 expect_error 2 "" "$data/elephant.off" --no-such-option
@@ -93,7 +93,7 @@ expect_error 2 "" "$data/elephant.off" --no-such-option
 "$tool" "$work/nan.off" > /dev/null 2> "$work/err.txt"
 [ $? -eq 1 ] && grep -qiE "non-finite|not a valid" "$work/err.txt" && pass || fail "NaN input: $(cat "$work/err.txt")"
 
-expect_error 1 "max_chart_faces" "$data/elephant.off" --max-chart-faces 0
+expect_error 1 "--max-chart-faces must be" "$data/elephant.off" --max-chart-faces 0
 expect_error 1 "vertex #1 has a non-finite" "$work/overflow.off"
 # Inputs that broke CGAL's own readers (see fuzz/regressions/README.md).
 cp "$data/../fuzz/regressions/ply_property_before_element" "$work/prop.ply"

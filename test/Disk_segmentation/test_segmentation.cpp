@@ -6,6 +6,7 @@
 #include "test_meshes.h"
 
 #include <CGAL/Disk_segmentation.h>
+#include <CGAL/Disk_segmentation/internal/Face_group_moves.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -14,9 +15,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
+#include <random>
 #include <set>
 #include <string>
 #include <vector>
@@ -684,4 +687,130 @@ TEST(Errors, MergeRefusesRegionsThatAreNotDisks)
   const std::string message = error_of([&] { DS::merge_disk_regions(tm, p.map); });
   EXPECT_NE(message.find("not a topological disk"), std::string::npos) << message;
   for(auto f : faces(tm)) EXPECT_EQ(get(p.map, f), 3u);
+}
+
+namespace {
+
+// A random group of faces: grown from a random face through edges (a small
+// polygon), or, one time in five, two faces anywhere (a part that is no disk).
+std::vector<std::size_t> random_group(const Mesh& tm, std::mt19937& rng, const std::vector<char>& taken)
+{
+  const std::size_t n = num_faces(tm);
+  std::uniform_int_distribution<std::size_t> any(0, n - 1);
+  std::vector<std::size_t> group;
+  std::size_t seed = any(rng);
+  for(int tries = 0; taken[seed] && tries < 100; ++tries)
+    seed = any(rng);
+  if(taken[seed])
+    return group;
+  group.push_back(seed);
+  if(rng() % 5 == 0)
+  {
+    const std::size_t other = any(rng);
+    if(!taken[other] && other != seed)
+      group.push_back(other);
+    return group;
+  }
+  const std::size_t size = 1 + rng() % 7;
+  for(std::size_t k = 0; k < group.size() && group.size() < size; ++k)
+    for(Mesh::Halfedge_index h : CGAL::halfedges_around_face(tm.halfedge(Mesh::Face_index(Mesh::size_type(group[k]))), tm))
+    {
+      const Mesh::Face_index g = tm.face(tm.opposite(h));
+      if(g != Mesh::null_face() && !taken[std::size_t(g)] &&
+         std::find(group.begin(), group.end(), std::size_t(g)) == group.end() && group.size() < size && rng() % 2)
+        group.push_back(std::size_t(g));
+    }
+  return group;
+}
+
+} // namespace
+
+// Face_group_mover decides each move by local tests; the independent
+// checker decides it by testing every patch whole: the first patch, in
+// order of the group's faces in it (then of patch id), where the group can
+// go with every patch staying a disk (or emptying), or none.
+TEST(Segmentation, FaceGroupsMoveWholeExactlyWhenEveryPatchStaysADisk)
+{
+  namespace DSI = CGAL::Disk_segmentation::internal;
+  const std::pair<const char*, TS::Soup> meshes[] = {
+    { "torus", TS::torus(24, 10) },
+    { "grid with holes", TS::grid_with_holes(18, 14, 3) },
+    { "disk with a center of valence 60", TS::disk(6, 60) },
+  };
+  std::size_t moved = 0, left = 0;
+  for(const auto& named : meshes)
+    for(std::uint32_t seed : { 1u, 2u, 3u })
+    {
+      SCOPED_TRACE(std::string(named.first) + ", seed " + std::to_string(seed));
+      std::mt19937 rng(seed);
+      const Mesh tm = make<Mesh>(named.second);
+      Patches<Mesh> p(tm);
+      DS::segment_into_disks(tm, p.map, DS::parameters::number_of_seeds(8 + rng() % 30).merge_threshold(2.));
+      ASSERT_TRUE(TS::check_disk_partition(tm, p.map).ok);
+
+      DSI::Indexed_triangle_mesh m;
+      std::vector<Mesh::Face_index> handles;
+      DSI::build_indexed_triangle_mesh(tm, DS::parameters::default_values(), m, handles);
+      std::vector<std::size_t> indexed(num_faces(tm));
+      std::vector<DSI::Index> labels(num_faces(tm));
+      for(DSI::Index i = 0; i < handles.size(); ++i)
+      {
+        indexed[std::size_t(handles[i])] = i;
+        labels[i] = DSI::Index(get(p.map, handles[i]));
+      }
+      DSI::Face_group_mover mover(m, labels);
+      std::vector<char> taken(num_faces(tm), 0);
+      for(int g = 0; g < 120; ++g)
+      {
+        const std::vector<std::size_t> group = random_group(tm, rng, taken);
+        if(group.empty())
+          continue;
+        for(std::size_t f : group)
+          taken[f] = 1;
+        // The independent decision, on the mesh's faces.
+        std::vector<std::size_t> before(num_faces(tm));
+        for(std::size_t f = 0; f < before.size(); ++f)
+          before[f] = labels[indexed[f]];
+        std::map<std::size_t, long> count;
+        for(std::size_t f : group)
+          ++count[before[f]];
+        std::vector<std::pair<long, std::size_t> > order;
+        for(const auto& c : count)
+          order.emplace_back(-c.second, c.first);
+        std::sort(order.begin(), order.end());
+        std::vector<std::size_t> expected = before;
+        bool whole = order.size() == 1;
+        for(std::size_t i = 0; i < order.size() && !whole; ++i)
+        {
+          std::vector<std::size_t> after = before;
+          for(std::size_t f : group)
+            after[f] = order[i].second;
+          bool disks = true;
+          for(const auto& c : count)
+          {
+            std::vector<Mesh::Face_index> faces;
+            for(std::size_t f = 0; f < after.size(); ++f)
+              if(after[f] == c.first)
+                faces.push_back(Mesh::Face_index(Mesh::size_type(f)));
+            disks = disks && (faces.empty() || TS::is_disk(tm, faces));
+          }
+          if(disks)
+          {
+            expected = after;
+            whole = true;
+          }
+        }
+        if(order.size() > 1)
+          ++(whole ? moved : left);
+        std::vector<DSI::Index> group_indexed;
+        for(std::size_t f : group)
+          group_indexed.push_back(DSI::Index(indexed[f]));
+        EXPECT_EQ(mover.keep_whole(group_indexed, std::size_t(-1)), whole) << "group " << g;
+        for(std::size_t f = 0; f < expected.size(); ++f)
+          ASSERT_EQ(labels[indexed[f]], expected[f]) << "group " << g << ", face " << f;
+      }
+    }
+  // Both outcomes were seen, so that the test tests something.
+  EXPECT_GT(moved, 20u);
+  EXPECT_GT(left, 20u);
 }
