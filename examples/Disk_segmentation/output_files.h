@@ -18,8 +18,10 @@
 
 #include "tool_error.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <csignal>
+#include <cstdlib>
 #include <cstring>
 #include <functional>
 #include <stdexcept>
@@ -28,8 +30,10 @@
 #include <string>
 #include <vector>
 
+#include <dirent.h>
 #include <fcntl.h>
 #include <limits.h>
+#include <signal.h>
 #include <stdlib.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -157,6 +161,49 @@ inline std::string canonical_path(const std::string& path)
   if(::realpath(path.c_str(), resolved) == nullptr)
     return std::string();
   return resolved;
+}
+
+// The start of the names of the temporary files beside `name` in `folder`:
+// ".NAME.disk_uv-", then the process id and an attempt number. A name too
+// long for the folder (NAME_MAX, 255 bytes on most file systems) keeps only
+// its first bytes, cut before a UTF-8 character, so that any legal output
+// name gets a temporary name.
+inline std::string temporary_prefix(const std::string& folder, const std::string& name)
+{
+  const long limit = ::pathconf(folder.c_str(), _PC_NAME_MAX);
+  const std::size_t name_max = limit > 0 ? static_cast<std::size_t>(limit) : 255;
+  // ".", ".disk_uv-", a pid of up to 10 digits, "-" and an attempt of up to 2.
+  const std::size_t room = name_max > 23 ? name_max - 23 : 0;
+  std::size_t keep = (std::min)(name.size(), room);
+  while(keep > 0 && keep < name.size() && (static_cast<unsigned char>(name[keep]) & 0xc0) == 0x80)
+    --keep;
+  return "." + name.substr(0, keep) + ".disk_uv-";
+}
+
+// Removes the temporary files `prefix`PID-N in `folder` whose process is
+// gone: a run killed (SIGKILL, a power cut) while writing leaves them,
+// full-size. Files of a live process, or named otherwise, stay.
+inline void remove_stale_temporaries(const std::string& folder, const std::string& prefix)
+{
+  DIR* dir = ::opendir(folder.c_str());
+  if(dir == nullptr)
+    return;
+  while(const dirent* entry = ::readdir(dir))
+  {
+    const std::string name = entry->d_name;
+    if(name.compare(0, prefix.size(), prefix) != 0)
+      continue;
+    const std::string rest = name.substr(prefix.size());
+    const std::size_t dash = rest.find('-');
+    if(dash == 0 || dash == std::string::npos || dash + 1 == rest.size() ||
+       rest.find_first_not_of("0123456789-") != std::string::npos || rest.find('-', dash + 1) != std::string::npos ||
+       dash > 10)
+      continue;
+    const long pid = std::strtol(rest.c_str(), nullptr, 10);
+    if(pid > 0 && pid != ::getpid() && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH)
+      ::unlink((folder + "/" + name).c_str());
+  }
+  ::closedir(dir);
 }
 
 } // namespace internal
@@ -361,7 +408,9 @@ private:
   void write_temporary(Output& o, const Writer& writer)
   {
     const std::string folder = internal::directory_of(o.target);
-    const std::string stem = folder + "/." + internal::file_name_of(o.target) + ".disk_uv-" + std::to_string(::getpid());
+    const std::string prefix = internal::temporary_prefix(folder, internal::file_name_of(o.target));
+    internal::remove_stale_temporaries(folder, prefix);
+    const std::string stem = folder + "/" + prefix + std::to_string(::getpid());
     int fd = -1;
     // At most 100 names; an error other than EEXIST ends it at once.
     for(int attempt = 0; attempt < 100 && fd < 0; ++attempt)

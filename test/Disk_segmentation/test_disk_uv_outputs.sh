@@ -139,12 +139,37 @@ for bad in "-n -1" "--seeds=-1" "-n 99999999999999999999999" "--max-chart-faces 
   [ -e ids.txt ] && fail "'$bad' wrote an output" || pass
 done
 # Parameters are checked before the input is read.
-expect_refused 1 "number_of_subsamples" missing.off -k 1
-expect_refused 1 "padding" missing.off --padding -1
+expect_refused 1 "^disk_uv: error: -k/--subsamples must be at least 2" missing.off -k 1
+expect_refused 1 "^disk_uv: error: --padding must be" missing.off --padding -1
 # A good run still writes everything.
 run dir/x.off -o good.obj --report good.json --patch-ids good.txt && pass || fail "good run failed: $(cat err.txt)"
 [ "$(wc -l < good.txt)" -eq 8 ] && pass || fail "patch ids not written"
 no_temporary_left "$work"
+
+# --- 9. long names, stale temporaries, the user's flags in messages
+# The longest legal names: their temporary names must still fit NAME_MAX.
+long=$(printf 'a%.0s' $(seq 1 251)).obj
+run dir/x.off -o "$long" && pass || fail "a 255-byte output name was refused: $(cat err.txt)"
+grep -q '^vt ' "$long" && pass || fail "the 255-byte output was not written"
+accented=$(printf '\303\251%.0s' $(seq 1 120)).obj
+run dir/x.off -o "$accented" --report "$accented.json" && pass || fail "a 244-byte UTF-8 output name was refused: $(cat err.txt)"
+[ -s "$accented" ] && [ -s "$accented.json" ] && pass || fail "the 244-byte outputs were not written"
+rm -f "$long" "$accented" "$accented.json"
+no_temporary_left "$work"
+# A run killed while writing left temporaries: the next run for that
+# output removes them; a live process's, or another output's, stay.
+dead=$(sh -c 'echo $$')
+touch ".t.obj.disk_uv-$dead-0" ".t.obj.disk_uv-$$-0" ".u.obj.disk_uv-$dead-0" ".t.obj.disk_uv-x-0"
+run dir/x.off -o t.obj && pass || fail "run with stale temporaries failed: $(cat err.txt)"
+[ -e ".t.obj.disk_uv-$dead-0" ] && fail "a dead run's temporary was left" || pass
+[ -e ".t.obj.disk_uv-$$-0" ] && pass || fail "a live process's temporary was removed"
+[ -e ".u.obj.disk_uv-$dead-0" ] && pass || fail "another output's temporary was removed"
+[ -e ".t.obj.disk_uv-x-0" ] && pass || fail "a file not named as a temporary was removed"
+rm -f ".t.obj.disk_uv-$$-0" ".u.obj.disk_uv-$dead-0" ".t.obj.disk_uv-x-0"
+# Messages name the options as typed, not the library's parameters.
+expect_refused 1 "^disk_uv: error: --padding \(3\) is too large" dir/x.off --resolution 8 --padding 3
+expect_refused 1 "^disk_uv: error: --max-stretch must be > 1" dir/x.off --max-stretch 0.5
+expect_refused 1 "^disk_uv: error: -n/--seeds must be at least 1" dir/x.off -n 0
 
 echo "disk_uv_outputs: $passed passed, $failures failed"
 [ "$failures" -eq 0 ]
