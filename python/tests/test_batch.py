@@ -98,3 +98,6 @@ def test_manifest_and_bad_arguments(tmp_path):
     assert batch(str(tmp_path / "missing"), str(out)).returncode == 2
     wrong = batch(str(manifest), str(out), "--method", "arap", "--resolution", "-3")
     assert wrong.returncode == 2 and "resolution" in wrong.stderr
+    # The flags as typed, not the module's keywords or the library's parameters.
+    wrong = batch(str(manifest), str(out), "--max-stretch", "0.5")
+    assert wrong.returncode == 2 and "error: --max-stretch must be > 1" in wrong.stderr, wrong.stderr
