@@ -1289,6 +1289,35 @@ TEST(Atlas, FreeBorderLscmAndArapKeepAPlanarChartUpToASimilarity)
   EXPECT_EQ(similarity_problem(p.m, c, c.uv, 1e-6), "");
 }
 
+TEST(Atlas, FreeBorderLscmStaysExactOnNeedles)
+{
+  // Three needles of a fan around a center (angles of 2 pi / 200000 there,
+  // cotangents of 3e4) and one hinged on their rim towards an apex, as at
+  // the rim of a closed cone of valence 200k: developable, so LSCM must
+  // flatten it by a similarity. Cotangents clamped at 1e4 made its energy
+  // indefinite: the center landed inside the rim and the map folded.
+  const double a = 6.283185307179586 / 200000.;
+  TS::Soup s;
+  s.points = { {{ 0., 0., 0. }}, {{ 1., 0., 0. }}, {{ std::cos(a), std::sin(a), 0. }},
+               {{ std::cos(2 * a), std::sin(2 * a), 0. }}, {{ std::cos(3 * a), std::sin(3 * a), 0. }},
+               {{ 0., 0., 0.3 }} };
+  s.triangles = { {{ 0, 2, 1 }}, {{ 0, 3, 2 }}, {{ 0, 4, 3 }}, {{ 5, 2, 3 }} };
+  Disk_chart p;
+  p.tm = make(s);
+  DS::internal::build_indexed_triangle_mesh(p.tm, DS::parameters::default_values(), p.m, p.face_handles);
+  DS::internal::Chart c = whole_chart(p);
+  const std::vector<DS::internal::Index> border = DS::internal::chart_border_loop(c);
+  ASSERT_EQ(border.size(), 6u);
+  const DS::internal::Chart_geometry g = DS::internal::chart_geometry(p.m, c);
+  std::vector<std::array<double, 2> > lscm;
+  ASSERT_TRUE(DS::internal::free_border_lscm(g, std::vector<std::size_t>(border.begin(), border.end()), lscm));
+  DS::internal::keep_winding(c, lscm);
+  EXPECT_EQ(similarity_problem(p.m, c, lscm, 1e-5), "");
+  std::vector<DS::internal::Index> loop;
+  ASSERT_TRUE(DS::internal::arap_from_lscm(p.m, c, loop));
+  EXPECT_EQ(similarity_problem(p.m, c, c.uv, 1e-5), "");
+}
+
 TEST(Atlas, ChartsBuiltFromSolvedChartsInheritTheirEliminationOrders)
 {
   // Two halves of a curved disk get their orders when their solvers'

@@ -122,11 +122,16 @@ inline std::vector<Index> chart_border_loop(const Chart& c)
       for(int i = 0; i < 3; ++i)
         out[fill[t[i]]++] = t[(i + 1) % 3];
   }
-  // Sorted: a binary search, as a vertex of high valence has many edges.
+  // The edges out of a vertex of high valence are sorted and searched in
+  // halves (looking each up in turn was quadratic there); the few out of
+  // any other vertex are scanned.
+  const std::size_t few = 16;
   for(std::size_t v = 0; v < nv; ++v)
-    std::sort(out.begin() + first[v], out.begin() + first[v + 1]);
+    if(first[v + 1] - first[v] > few)
+      std::sort(out.begin() + first[v], out.begin() + first[v + 1]);
   auto has_edge = [&](Index a, Index b) {
-    return std::binary_search(out.begin() + first[a], out.begin() + first[a + 1], b);
+    const auto begin = out.begin() + first[a], end = out.begin() + first[a + 1];
+    return end - begin > std::ptrdiff_t(few) ? std::binary_search(begin, end, b) : std::find(begin, end, b) != end;
   };
   std::vector<Index> next(nv, no_index);
   std::size_t border_edges = 0;

@@ -78,8 +78,8 @@ inline bool free_border_lscm(const Chart_geometry& g, const std::vector<std::siz
   if(!g.has_frames)
     return false;
   const Chart_edges& edges = g.edges;
-  const std::vector<double>& edge_weight = g.edge_weight;
-  const std::vector<double>& vertex_weight = g.vertex_weight;
+  const std::vector<double>& edge_weight = g.lscm_edge_weight();
+  const std::vector<double>& vertex_weight = g.lscm_vertex_weight();
   // +1 (-1) where the border runs along an edge from its first (second)
   // end to the other, 0 off the border.
   std::vector<signed char> border_direction(edges.ends.size(), 0);

@@ -123,26 +123,20 @@ void assemble_upper_triangle(Eigen::Index size, std::size_t non_zeros, const Col
     const int begin = next;
     column(k, [&](Eigen::Index row, Scalar v) {
       CGAL_assertion(row <= k && next < int(non_zeros));
-      inner[next] = int(row);
-      value[next++] = v;
-    });
-    // Row order: insertion for the few entries of most columns, a sort for
-    // the column of a vertex of high valence (insertion was quadratic there).
-    if(next - begin <= 32)
-      for(int i = begin + 1; i < next; ++i)
-      {
-        const int row = inner[i];
-        const Scalar v = value[i];
-        int j = i;
+      // Insertion in row order: a column holds a few entries. Past 32 (a
+      // vertex of high valence, where insertion was quadratic) entries are
+      // appended, and the column sorted once below.
+      int j = next++;
+      if(j - begin < 32)
         for(; j > begin && inner[j - 1] > row; --j)
         {
           inner[j] = inner[j - 1];
           value[j] = value[j - 1];
         }
-        inner[j] = row;
-        value[j] = v;
-      }
-    else
+      inner[j] = int(row);
+      value[j] = v;
+    });
+    if(next - begin > 32)
     {
       long_column.clear();
       for(int i = begin; i < next; ++i)
@@ -272,15 +266,18 @@ inline void cotangent_weights(const Chart_edges& edges, const std::vector<std::a
 // edge (edge i from corner i to corner i+1), clamped so that needle
 // triangles do not dominate a system built on them. The cotangent
 // Laplacian of both ARAP and LSCM (Free_border_lscm.h) comes from here.
-// False if a triangle has a zero edge or no area.
+// If any was clamped, `exact_cot` gets them all unclamped (else it is
+// emptied). False if a triangle has a zero edge or no area.
 inline bool isometric_frames(const std::vector<std::array<double, 3> >& points,
                              const std::vector<std::array<std::size_t, 3> >& triangles,
                              std::vector<std::array<std::array<double, 2>, 3> >& local,
-                             std::vector<std::array<double, 3> >& cot)
+                             std::vector<std::array<double, 3> >& cot,
+                             std::vector<std::array<double, 3> >& exact_cot)
 {
   const std::size_t nt = triangles.size();
   local.resize(nt);
   cot.resize(nt);
+  exact_cot.clear();
   for(std::size_t t = 0; t < nt; ++t)
   {
     const auto& p0 = points[triangles[t][0]];
@@ -301,7 +298,15 @@ inline bool isometric_frames(const std::vector<std::array<double, 3> >& points,
       const auto& b = local[t][(i + 1) % 3];
       const auto& c = local[t][(i + 2) % 3];
       const double ux = a[0] - c[0], uy = a[1] - c[1], vx = b[0] - c[0], vy = b[1] - c[1];
-      cot[t][i] = (std::max)(-1e4, (std::min)(1e4, (ux * vx + uy * vy) / (ux * vy - uy * vx)));
+      const double exact = (ux * vx + uy * vy) / (ux * vy - uy * vx);
+      cot[t][i] = (std::max)(-1e4, (std::min)(1e4, exact));
+      if(cot[t][i] != exact && exact_cot.empty())
+        exact_cot.assign(cot.begin(), cot.begin() + std::ptrdiff_t(t + 1));
+      if(!exact_cot.empty())
+      {
+        exact_cot.resize(t + 1);
+        exact_cot[t][i] = exact;
+      }
     }
   }
   return true;
@@ -324,6 +329,11 @@ struct Chart_geometry
   std::vector<std::array<std::array<double, 2>, 3> > frames;
   std::vector<std::array<double, 3> > cot;
   std::vector<double> edge_weight, vertex_weight;
+  // LSCM's weights where a cotangent was clamped (else empty: the same as
+  // above). Its energy E_D - A is positive semidefinite with the true
+  // cotangents only: clamped needles made the system indefinite, and
+  // LSCM folded the slivers at the rim of a closed cone of valence 200k.
+  std::vector<double> conformal_edge_weight, conformal_vertex_weight;
   bool has_frames = false;
 
   Chart_geometry() = default;
@@ -334,9 +344,21 @@ struct Chart_geometry
     build_chart_edges(points.size(), triangles, edges);
     if(elimination_rank.size() != points.size())
       elimination_rank = vertex_elimination_rank(points.size(), edges);
-    has_frames = isometric_frames(points, triangles, frames, cot);
+    std::vector<std::array<double, 3> > exact_cot;
+    has_frames = isometric_frames(points, triangles, frames, cot, exact_cot);
     if(has_frames)
       cotangent_weights(edges, cot, edge_weight, vertex_weight);
+    if(has_frames && !exact_cot.empty())
+      cotangent_weights(edges, exact_cot, conformal_edge_weight, conformal_vertex_weight);
+  }
+
+  const std::vector<double>& lscm_edge_weight() const
+  {
+    return conformal_edge_weight.empty() ? edge_weight : conformal_edge_weight;
+  }
+  const std::vector<double>& lscm_vertex_weight() const
+  {
+    return conformal_edge_weight.empty() ? vertex_weight : conformal_vertex_weight;
   }
 };
 
