@@ -28,6 +28,7 @@
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -74,25 +75,22 @@ void checked_triangle_soup_to_mesh(const std::vector<Point>& points,
     const std::uint64_t a = from(c), b = to(c);
     return (std::min)(a, b) << 32 | (std::max)(a, b);
   };
-  std::vector<std::uint32_t> by_edge(corners);
+  std::vector<std::pair<std::uint64_t, std::uint32_t> > by_edge(corners);
   for(std::uint32_t c = 0; c < corners; ++c)
-    by_edge[c] = c;
-  std::sort(by_edge.begin(), by_edge.end(), [&](std::uint32_t a, std::uint32_t b) {
-    const std::uint64_t ka = key(a), kb = key(b);
-    return ka < kb || (ka == kb && a < b);
-  });
+    by_edge[c] = std::make_pair(key(c), c);
+  std::sort(by_edge.begin(), by_edge.end());
   const std::uint32_t none = (std::numeric_limits<std::uint32_t>::max)();
   std::vector<std::uint32_t> partner(corners, none);
   for(std::size_t i = 0; i + 1 < corners; ++i)
-    if(key(by_edge[i]) == key(by_edge[i + 1]))
+    if(by_edge[i].first == by_edge[i + 1].first)
     {
-      if(i + 2 < corners && key(by_edge[i + 2]) == key(by_edge[i]))
+      if(i + 2 < corners && by_edge[i + 2].first == by_edge[i].first)
         throw std::logic_error("checked_triangle_soup_to_mesh: an edge of three faces");
-      partner[by_edge[i]] = by_edge[i + 1];
-      partner[by_edge[i + 1]] = by_edge[i];
+      partner[by_edge[i].second] = by_edge[i + 1].second;
+      partner[by_edge[i + 1].second] = by_edge[i].second;
       ++i;
     }
-  by_edge = std::vector<std::uint32_t>();
+  std::vector<std::pair<std::uint64_t, std::uint32_t> >().swap(by_edge);
 
   // Edges in order of first use, each halfedge running as in that face.
   std::vector<halfedge_descriptor> corner_halfedge(corners);
