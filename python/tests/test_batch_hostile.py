@@ -193,15 +193,13 @@ def test_time_limit(tmp_path, slow_mesh):
     (tmp_path / "tri2.off").write_text(TRIANGLE)
     manifest.write_text("%s\ntri.off\ntri2.off\n" % slow_mesh)
     out = tmp_path / "out"
-    start = time.monotonic()
     # One worker: the small meshes come after the slow one (largest first), on the worker it had.
-    result = run(str(manifest), str(out), "--workers", "1", "--time-limit", "1.5")
+    result = run(str(manifest), str(out), "--workers", "1", "--time-limit", "0.5")
     assert result.returncode == 1, result.stderr
-    assert time.monotonic() - start < 30
     rows = summary(out)
-    assert rows["grid"]["status"] == "error" and rows["grid"]["error"] == slow_mesh + ": time limit of 1.5 s exceeded"
+    assert rows["grid"]["status"] == "error" and rows["grid"]["error"] == slow_mesh + ": time limit of 0.5 s exceeded"
     with open(out / "grid.error.json") as f:
-        assert json.load(f)["error"] == slow_mesh + ": time limit of 1.5 s exceeded"
+        assert json.load(f)["error"] == slow_mesh + ": time limit of 0.5 s exceeded"
     assert rows["tri"]["status"] == rows["tri2"]["status"] == "ok"
     assert not [p for p in out.rglob("*") if p.name.endswith(".part")]
     for bad in ("0", "-1", "abc", "nan", "inf"):
@@ -240,7 +238,7 @@ def test_a_mesh_process_that_dies_or_times_out_fails_alone(tmp_path, slow_mesh, 
     out.mkdir()
     rows = []
     task = threading.Thread(target=lambda: rows.append(batch.process_mesh(
-        "grid", slow_mesh, str(out), False, {}, {"threads": 1}, 3.0 if end == "time limit" else None)))
+        "grid", slow_mesh, str(out), False, {}, {"threads": 1}, 1.0 if end == "time limit" else None)))
     task.start()
     pid = _mesh_process()
     # As if it were killed while writing a file.
@@ -251,7 +249,7 @@ def test_a_mesh_process_that_dies_or_times_out_fails_alone(tmp_path, slow_mesh, 
     task.join(30)
     assert rows, "process_mesh() did not return"
     row = rows[0]
-    message = {"killed": "killed by signal 9 (SIGKILL: out of memory?)", "time limit": "time limit of 3 s exceeded",
+    message = {"killed": "killed by signal 9 (SIGKILL: out of memory?)", "time limit": "time limit of 1 s exceeded",
                "stopped": "stopped by signal 15 (SIGTERM)"}[end]
     assert row["status"] == "error" and row["error"].startswith(slow_mesh + ": ") and message in row["error"], row
     if end == "stopped":  # the batch is being stopped: no fault of the mesh, the next run does it
