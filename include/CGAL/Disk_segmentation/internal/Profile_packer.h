@@ -216,18 +216,10 @@ private:
       {
         if(!(chart.border_edges[k / 3] & (1 << j)))
           continue;
-        const Packing_point& a = t[j];
-        const Packing_point& b = t[(j + 1) % 3];
-        const long c0 = (std::max)(0L, static_cast<long>(std::floor((std::min)(a.x, b.x) - slack)));
-        const long c1 = (std::min)(columns - 1, static_cast<long>(std::floor((std::max)(a.x, b.x) + slack)));
-        for(long c = c0; c <= c1; ++c)
-        {
-          double ylo, yhi;
-          if(!segment_slab_range(a, b, double(c) - slack, double(c + 1) + slack, ylo, yhi))
-            continue;
+        for_each_slab_of_segment(t[j], t[(j + 1) % 3], columns, slack, [&](long c, double ylo, double yhi) {
           bottom[c] = (std::min)(bottom[c], static_cast<long>(std::floor(ylo - slack)));
           top[c] = (std::max)(top[c], static_cast<long>(std::floor(yhi + slack)) + 1);
-        }
+        });
       }
     }
     // A chart is connected, so its columns form one run; a column no

@@ -588,19 +588,13 @@ private:
   // row's slab.
   static void mark_segment(const Packing_point& a, const Packing_point& b, long rows, long columns, Cell_rows& cells)
   {
-    const Packing_point ta{ a.y, a.x }, tb{ b.y, b.x };
-    const long r0 = (std::max)(0L, static_cast<long>(std::floor((std::min)(a.y, b.y) - slack)));
-    const long r1 = (std::min)(rows - 1, static_cast<long>(std::floor((std::max)(a.y, b.y) + slack)));
-    for(long r = r0; r <= r1; ++r)
-    {
-      double xlo, xhi;
-      if(!segment_slab_range(ta, tb, double(r) - slack, double(r + 1) + slack, xlo, xhi))
-        continue;
+    // Rows are the slabs of the segment transposed.
+    for_each_slab_of_segment({ a.y, a.x }, { b.y, b.x }, rows, slack, [&](long r, double xlo, double xhi) {
       const long c0 = (std::max)(0L, static_cast<long>(std::floor(xlo - slack)));
       const long c1 = (std::min)(columns - 1, static_cast<long>(std::floor(xhi + slack)));
       if(c0 <= c1)
         cells.set(static_cast<std::size_t>(r), static_cast<std::size_t>(c0), static_cast<std::size_t>(c1));
-    }
+    });
   }
 
   // Where the border edge (a, b) crosses the centers of rows: a point is

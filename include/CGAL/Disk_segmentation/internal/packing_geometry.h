@@ -193,6 +193,23 @@ inline bool segment_slab_range(const Packing_point& a, const Packing_point& b, d
   return lo <= hi;
 }
 
+// Calls visit(s, lo, hi) for each slab s <= x <= s + 1 (widened by
+// `slack` on both sides), s in [0, slabs), that segment ab meets, with the
+// range [lo, hi] of its y-coordinates there.
+template <typename Visit>
+void for_each_slab_of_segment(const Packing_point& a, const Packing_point& b, long slabs, double slack,
+                              const Visit& visit)
+{
+  const long s0 = (std::max)(0L, static_cast<long>(std::floor((std::min)(a.x, b.x) - slack)));
+  const long s1 = (std::min)(slabs - 1, static_cast<long>(std::floor((std::max)(a.x, b.x) + slack)));
+  for(long s = s0; s <= s1; ++s)
+  {
+    double lo, hi;
+    if(segment_slab_range(a, b, double(s) - slack, double(s + 1) + slack, lo, hi))
+      visit(s, lo, hi);
+  }
+}
+
 // An eighth of a turn counterclockwise, as Packing_rotation::eighth_turned().
 inline Packing_point eighth_turn(const Packing_point& u)
 {
