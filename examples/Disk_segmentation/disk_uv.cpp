@@ -43,6 +43,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <iostream>
 #include <limits>
@@ -133,10 +134,36 @@ private:
   double last_print_ = 0;
 };
 
+// The first SIGINT or SIGTERM asks the run to stop: the atlas is cancelled
+// at its next progress report and nothing is written. The handler then
+// gives way to the default one, so that a second signal kills at once.
+volatile std::sig_atomic_t stop_signal = 0;
+
+extern "C" void on_stop_signal(int signal_number) { stop_signal = signal_number; }
+
+void catch_stop_signals()
+{
+  struct sigaction action;
+  action.sa_handler = on_stop_signal;
+  sigemptyset(&action.sa_mask);
+  // SA_RESTART: a read from a pipe goes on, and the run stops at its next report.
+  action.sa_flags = SA_RESETHAND | SA_RESTART;
+  for(int signal_number : { SIGINT, SIGTERM })
+  {
+    // A signal ignored by whoever started us (a background job) stays ignored.
+    struct sigaction current;
+    if(sigaction(signal_number, nullptr, &current) == 0 && current.sa_handler != SIG_IGN)
+      sigaction(signal_number, &action, nullptr);
+  }
+}
+
+std::string stop_signal_name() { return stop_signal == SIGTERM ? "SIGTERM" : "SIGINT (Ctrl-C)"; }
+
 } // namespace
 
 int main(int argc, char** argv)
 {
+  catch_stop_signals();
   CLI::App app{"disk_uv: UV atlas of a triangle mesh through a segmentation into topological disks"};
   std::string input, obj_path, glb_path, png_path, report_path, patch_ids_path, colored_path;
   std::string method_name = DS::to_string(DS::default_parameterization_method), packer_name = "tight";
@@ -267,9 +294,16 @@ int main(int argc, char** argv)
     const DS::Atlas_report report = DS::uv_atlas(
       mesh, uv,
       settings.face_patch_map(patch)
-        .progress_callback(std::function<void(const std::string&, std::size_t, std::size_t)>(
-          [&display](const std::string& s, std::size_t d, std::size_t t) { display(s, d, t); })));
+        .progress_callback(std::function<bool(const std::string&, std::size_t, std::size_t)>(
+          [&display](const std::string& s, std::size_t d, std::size_t t) {
+            display(s, d, t);
+            return stop_signal == 0;
+          })));
     display.finish();
+    // From here the writing's own handler (output_files.h) takes over: a
+    // signal removes the temporaries and ends the run.
+    if(stop_signal != 0)
+      throw DS::Cancelled("packing");
 
     report_ptr = &report;
     changes_ptr = &changes;
@@ -297,6 +331,13 @@ int main(int argc, char** argv)
                 << " charts have invalid UVs (run without --no-fallback to repair them)" << std::endl;
       return 1;
     }
+  }
+  catch(const DS::Cancelled& e)
+  {
+    display.finish();
+    std::cerr << "disk_uv: stopped by " << stop_signal_name() << " during the " << e.stage()
+              << "; no output was written" << std::endl;
+    return 128 + (stop_signal != 0 ? int(stop_signal) : SIGINT);
   }
   catch(const DS::Input_error& e)
   {

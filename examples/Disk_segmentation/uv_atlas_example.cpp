@@ -13,14 +13,20 @@
 // in the unit square, every triangle keeps a positive (counterclockwise) area.
 // With a second argument, the first atlas is saved there as an OBJ file
 // (a `vt` per corner, one group per chart).
+//
+// 3. Then a third atlas is started with a progress callback that stops it
+//    once the segmentation is done: uv_atlas() throws DS::Cancelled, and
+//    the maps keep the second atlas, as after any exception.
 
 #include <CGAL/Disk_segmentation.h>
 #include <CGAL/Disk_segmentation/IO/write_atlas_OBJ.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <algorithm>
 #include <fstream>
 #include <iostream>
+#include <string>
 #include <vector>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -114,5 +120,30 @@ int main(int argc, char** argv)
     return 1;
   }
   std::cout << "both atlases: every chart is a topological disk inside the unit square, no flipped triangle\n";
+
+  // 3. A callback that returns bool may stop the work (one that returns
+  //    nothing only follows it). Calls come one at a time, from any thread.
+  const std::vector<K::Point_2> grid_uvs(uv.begin(), uv.end());
+  try
+  {
+    DS::uv_atlas(mesh, uv, DS::parameters::face_patch_map(chart).progress_callback(
+      [](const std::string& stage, std::size_t done, std::size_t total) {
+        std::cout << "  " << stage << ' ' << done << '/' << total << "\n";
+        return stage == "segmentation";
+      }));
+    std::cerr << "the atlas was not cancelled" << std::endl;
+    return 1;
+  }
+  catch(const DS::Cancelled& e)
+  {
+    std::cout << "cancelled during the " << e.stage() << "\n";
+  }
+  if(!std::equal(grid_uvs.begin(), grid_uvs.end(), uv.begin()) ||
+     !check_atlas(mesh, chart, uv, charts.charts.size()))
+  {
+    std::cerr << "the cancelled call changed the maps" << std::endl;
+    return 1;
+  }
+  std::cout << "the maps still hold the grid atlas\n";
   return 0;
 }

@@ -6,6 +6,7 @@
 #ifndef CGAL_DISK_SEGMENTATION_H
 #define CGAL_DISK_SEGMENTATION_H
 
+#include <CGAL/Disk_segmentation/Cancelled.h>
 #include <CGAL/Disk_segmentation/Input_error.h>
 #include <CGAL/Disk_segmentation/parameters.h>
 #include <CGAL/Disk_segmentation/topology.h>

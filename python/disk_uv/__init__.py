@@ -22,13 +22,17 @@ import os
 from . import _disk_uv
 from ._files import write_atomically
 
-__all__ = ["Atlas", "ArgumentTypeError", "atlas", "parametrize", "segment", "load", "save_obj", "save_glb"]
+__all__ = ["Atlas", "ArgumentTypeError", "Cancelled", "atlas", "parametrize", "segment", "load", "save_obj", "save_glb"]
 
 METHODS = ("arap", "conformal", "lscm", "mvc", "tutte")
 
 # An argument of the wrong type (a method given as a number, a count as a
 # float): a TypeError, and a ValueError as earlier versions raised.
 ArgumentTypeError = _disk_uv.ArgumentTypeError
+
+# Raised when a ``progress`` callback returns False (a RuntimeError).
+# Ctrl-C raises KeyboardInterrupt, also within a second or so.
+Cancelled = _disk_uv.Cancelled
 
 
 class Atlas:
@@ -67,6 +71,13 @@ class Atlas:
             len(self.chart_ids), self.number_of_charts, 100 * self.report["packing"]["efficiency"])
 
 
+def _checked_progress(progress):
+    if progress is not None and not callable(progress):
+        raise ArgumentTypeError("progress must be None or a callable (stage, done, total), not %s"
+                                % type(progress).__name__)
+    return progress
+
+
 def _atlas_options(method, max_angle_distortion, max_area_distortion, max_stretch, max_area_scale,
                    max_stretch_p95, min_convexity, unbounded, rough_borders, resolution, padding, threads, seed, n, k,
                    threshold, packer, max_chart_faces, use_fallback):
@@ -90,7 +101,7 @@ def atlas(vertices, faces, method=_disk_uv.default_parameterization_method,
           min_convexity=_disk_uv.default_min_convexity,
           unbounded=False, rough_borders=False, resolution=1024, padding=2.0, threads=0, seed=None,
           n=10, k=5, threshold=_disk_uv.default_merge_threshold, packer="tight",
-          max_chart_faces=_disk_uv.default_max_chart_faces, use_fallback=True, face_groups=None):
+          max_chart_faces=_disk_uv.default_max_chart_faces, use_fallback=True, face_groups=None, progress=None):
     """UV atlas of a triangle mesh; the options are those of the ``disk_uv`` tool.
 
     Args:
@@ -119,14 +130,23 @@ def atlas(vertices, faces, method=_disk_uv.default_parameterization_method,
             are then parameterized and packed again without the distortion
             bound. ``report["polygons"]`` counts the polygons moved and
             those left across charts.
+        progress: None, or a callable ``progress(stage, done, total)``
+            called as the work goes ("segmentation", "parameterization",
+            "packing"), from another thread than the caller's; returning
+            False stops the computation with :class:`Cancelled`, and an
+            exception it raises stops it and is raised by ``atlas``.
 
     Returns:
         an :class:`Atlas`.
+
+    Ctrl-C (SIGINT) stops the computation at its next progress report and
+    raises KeyboardInterrupt.
     """
     options = _atlas_options(method, max_angle_distortion, max_area_distortion, max_stretch, max_area_scale,
                              max_stretch_p95, min_convexity, unbounded, rough_borders, resolution, padding, threads, seed, n,
                              k, threshold, packer, max_chart_faces, use_fallback)
     options["face_groups"] = face_groups
+    options["progress"] = _checked_progress(progress)
     result = _disk_uv.atlas(vertices, faces, options)
     return Atlas(vertices, faces, result["uvs"], result["chart_ids"], json.loads(result["report"]))
 
@@ -143,14 +163,16 @@ def parametrize(vertices, faces, **options):
     return atlas(vertices, faces, **options).xatlas_arrays()
 
 
-def segment(vertices, faces, n=10, k=5, threshold=_disk_uv.default_merge_threshold):
+def segment(vertices, faces, n=10, k=5, threshold=_disk_uv.default_merge_threshold, progress=None):
     """The paper's segmentation into topological disks: (F,) uint32 patch ids.
 
     Joint farthest-point sampling of ``n`` seeds and geodesic Voronoi cells,
     regions that are not disks re-sampled with ``k`` seeds, adjacent disks
     merged while their union stays a disk and scores below ``threshold``.
+    ``progress`` and Ctrl-C work as in :func:`atlas`.
     """
-    return _disk_uv.segment(vertices, faces, {"n": n, "k": k, "threshold": threshold})
+    return _disk_uv.segment(vertices, faces, {"n": n, "k": k, "threshold": threshold,
+                                              "progress": _checked_progress(progress)})
 
 
 def load(path, repair=False, triangulate=False):

@@ -23,7 +23,14 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
 #include <cstdint>
+#include <exception>
+#include <functional>
+#include <mutex>
+#include <thread>
 #include <limits>
 #include <numeric>
 #include <sstream>
@@ -325,6 +332,84 @@ std::pair<std::size_t, std::size_t> keep_polygons_whole(const Mesh& mesh, const 
   return std::make_pair(moves.moved, moves.left);
 }
 
+
+typedef std::function<bool(const std::string&, std::size_t, std::size_t)> Keep_going;
+
+// Runs `work(keep_going)` (the library's computation, without the GIL) on a
+// thread of its own, while the interpreter's thread watches for signals:
+// Ctrl-C raises KeyboardInterrupt as soon as the computation's next
+// progress report. `progress` (None or a Python callable of (stage, done,
+// total)) is called at each report; a return of False cancels
+// (DS::Cancelled, raised as disk_uv.Cancelled), and an exception it raises
+// cancels and is raised as it is.
+void run_interruptible(const py::object& progress, const std::function<void(const Keep_going&)>& work)
+{
+  std::atomic<bool> stop(false);
+  std::exception_ptr python_error, work_error;
+  std::mutex python_error_mutex;
+  const Keep_going keep_going = [&](const std::string& stage, std::size_t done, std::size_t total) {
+    if(stop)
+      return false;
+    if(progress.is_none())
+      return true;
+    py::gil_scoped_acquire gil;
+    try
+    {
+      const py::object answer = progress(stage, done, total);
+      return answer.is_none() || PyObject_IsTrue(answer.ptr()) != 0;
+    }
+    catch(py::error_already_set&)
+    {
+      std::lock_guard<std::mutex> lock(python_error_mutex);
+      python_error = std::current_exception();
+      stop = true;
+      return false;
+    }
+  };
+  {
+    py::gil_scoped_release release;
+    std::mutex mutex;
+    std::condition_variable finished;
+    bool done = false;
+    std::thread worker([&] {
+      try
+      {
+        work(keep_going);
+      }
+      catch(...)
+      {
+        work_error = std::current_exception();
+      }
+      std::lock_guard<std::mutex> lock(mutex);
+      done = true;
+      finished.notify_one();
+    });
+    std::unique_lock<std::mutex> lock(mutex);
+    while(!finished.wait_for(lock, std::chrono::milliseconds(50), [&] { return done; }))
+    {
+      lock.unlock();
+      {
+        py::gil_scoped_acquire gil;
+        // Runs the Python signal handlers, which only run on this thread.
+        if(!stop && PyErr_CheckSignals() != 0)
+        {
+          std::lock_guard<std::mutex> error_lock(python_error_mutex);
+          if(!python_error)
+            python_error = std::make_exception_ptr(py::error_already_set());
+          stop = true;
+        }
+      }
+      lock.lock();
+    }
+    lock.unlock();
+    worker.join();
+  }
+  if(python_error)
+    std::rethrow_exception(python_error);
+  if(work_error)
+    std::rethrow_exception(work_error);
+}
+
 py::dict run_atlas(const py::handle& vertices, const py::handle& faces, const py::dict& o)
 {
   Soup soup = soup_from_arrays(vertices, faces);
@@ -392,12 +477,12 @@ py::dict run_atlas(const py::handle& vertices, const py::handle& faces, const py
   UV_map uv = mesh.add_property_map<Mesh::Halfedge_index, Kernel::Point_2>("h:uv", Kernel::Point_2(0, 0)).first;
   DS::Atlas_report report;
   std::pair<std::size_t, std::size_t> polygon_moves(0, 0);
-  {
-    py::gil_scoped_release release;
+  run_interruptible(o["progress"], [&](const Keep_going& keep_going) {
     if(seeded)
-      report = DS::uv_atlas(mesh, uv, settings.face_patch_map(patch).random_seed(seed_value));
+      report = DS::uv_atlas(mesh, uv,
+                            settings.face_patch_map(patch).random_seed(seed_value).progress_callback(keep_going));
     else
-      report = DS::uv_atlas(mesh, uv, settings.face_patch_map(patch));
+      report = DS::uv_atlas(mesh, uv, settings.face_patch_map(patch).progress_callback(keep_going));
     if(!groups.empty())
     {
       std::vector<std::size_t> ids(mesh.number_of_faces());
@@ -414,13 +499,13 @@ py::dict run_atlas(const py::handle& vertices, const py::handle& faces, const py
         timer.start();
         const auto again = settings.max_angle_distortion(inf).max_area_distortion(inf).max_stretch(inf)
                              .max_area_scale(inf).max_stretch_p95(inf).min_convexity(0.);
-        report.parameterization = DS::parameterize_patches(mesh, patch, uv, again);
+        report.parameterization = DS::parameterize_patches(mesh, patch, uv, again.progress_callback(keep_going));
         report.number_of_charts = report.parameterization.charts.size();
         report.packing = DS::pack_patches(mesh, patch, uv, again);
         report.total_seconds += timer.time();
       }
     }
-  }
+  });
   disk_uv::Read_changes changes;
   changes.pinched_vertices_split = soup.pinched_vertices_split;
   nlohmann::json json =
@@ -440,10 +525,9 @@ py::array_t<std::uint32_t> run_segment(const py::handle& vertices, const py::han
   const auto settings = DS::parameters::number_of_seeds(count_option(o, "n"))
                           .number_of_subsamples(count_option(o, "k"))
                           .merge_threshold(real_option(o, "threshold"));
-  {
-    py::gil_scoped_release release;
-    DS::segment_into_disks(mesh, patch, settings);
-  }
+  run_interruptible(o["progress"], [&](const Keep_going& keep_going) {
+    DS::segment_into_disks(mesh, patch, settings.progress_callback(keep_going));
+  });
   py::array_t<std::uint32_t> ids(py::ssize_t(mesh.number_of_faces()));
   auto out = ids.mutable_unchecked<1>();
   for(Mesh::Face_index f : mesh.faces())
@@ -570,11 +654,16 @@ PYBIND11_MODULE(_disk_uv, m)
   m.doc() = "Compiled part of disk_uv (use the disk_uv package)";
   static py::exception<Bad_type> argument_type_error(m, "ArgumentTypeError",
                                                       py::make_tuple(py::handle(PyExc_TypeError), py::handle(PyExc_ValueError)));
+  static py::exception<DS::Cancelled> cancelled(m, "Cancelled", PyExc_RuntimeError);
   py::register_exception_translator([](std::exception_ptr p) {
     try
     {
       if(p)
         std::rethrow_exception(p);
+    }
+    catch(const DS::Cancelled& e)
+    {
+      cancelled(as_utf8(e.what()).c_str());
     }
     catch(const Bad_type& e)
     {

@@ -286,3 +286,72 @@ def test_numpy_scalars_are_accepted_as_options():
         disk_uv.atlas(vertices, faces, resolution=512.0)
     with pytest.raises(ValueError, match="number"):
         disk_uv.atlas(vertices, faces, padding="2")
+
+
+def test_a_progress_callback_sees_the_stages_and_can_cancel():
+    vertices, faces = mesh("elephant.off")
+    stages = []
+
+    def stop_in_parameterization(stage, done, total):
+        stages.append(stage)
+        assert 0 <= done <= total
+        return stage != "parameterization"
+
+    with pytest.raises(disk_uv.Cancelled, match="parameterization"):
+        disk_uv.atlas(vertices, faces, progress=stop_in_parameterization)
+    assert stages[0] == "segmentation" and stages[-1] == "parameterization"
+    assert stages.count("parameterization") == 1  # not called again once it said no
+
+    def failing(stage, done, total):
+        if stage == "packing":
+            raise ZeroDivisionError("raised by the callback")
+
+    with pytest.raises(ZeroDivisionError, match="raised by the callback"):
+        disk_uv.atlas(vertices, faces, progress=failing)
+    with pytest.raises(disk_uv.Cancelled):
+        disk_uv.segment(vertices, faces, progress=lambda *report: False)
+    with pytest.raises(TypeError, match="progress must be None or a callable"):
+        disk_uv.atlas(vertices, faces, progress=3)
+
+    # A callback that returns None or True changes nothing.
+    seen = []
+    followed = disk_uv.atlas(vertices, faces, progress=lambda *report: seen.append(report))
+    plain = disk_uv.atlas(vertices, faces)
+    assert numpy.array_equal(followed.chart_ids, plain.chart_ids) and numpy.array_equal(followed.uvs, plain.uvs)
+    assert [stage for stage, _, _ in seen].count("packing") == 2
+    assert numpy.array_equal(disk_uv.segment(vertices, faces, progress=lambda *report: True),
+                             disk_uv.segment(vertices, faces))
+
+
+CTRL_C_CHILD = r"""
+import os, signal, sys, time
+import disk_uv
+signal.signal(signal.SIGINT, signal.default_int_handler)  # even if started with SIGINT ignored
+function, stage_to_stop, path = sys.argv[1:]
+vertices, faces = disk_uv.load(path)
+calls = []
+
+def progress(stage, done, total):
+    calls.append(stage)
+    if stage == stage_to_stop and calls.count(stage) == 2:
+        os.kill(os.getpid(), signal.SIGINT)
+        time.sleep(1.0)  # the interpreter's thread sees the signal meanwhile
+        print("signal sent after", len(calls), "calls", flush=True)
+
+try:
+    getattr(disk_uv, function)(vertices, faces, progress=progress)
+    print("finished")
+except KeyboardInterrupt:
+    print("KeyboardInterrupt after", len(calls), "calls")
+"""
+
+
+@pytest.mark.parametrize("function, stage", [("atlas", "parameterization"), ("segment", "segmentation")])
+def test_ctrl_c_stops_the_computation_with_keyboard_interrupt(function, stage):
+    child = subprocess.run([sys.executable, "-c", CTRL_C_CHILD, function, stage, os.path.join(DATA, "elephant.off")],
+                           capture_output=True, text=True, timeout=300)
+    lines = child.stdout.split("\n")
+    assert lines[0].startswith("signal sent after "), child.stdout + child.stderr
+    calls = lines[0].split()[3]
+    # Stopped at the next report, without calling the callback again.
+    assert lines[1] == "KeyboardInterrupt after %s calls" % calls, child.stdout + child.stderr

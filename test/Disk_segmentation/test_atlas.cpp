@@ -1152,6 +1152,126 @@ TEST(Atlas, BadParametersAreRejectedBeforeAnythingIsWritten)
   EXPECT_EQ(DS::parameterization_method_from_string("arap"), DS::Parameterization_method::ARAP);
 }
 
+// What the caller gave uv_atlas() and the stages, as it was before the call.
+struct Caller_outputs
+{
+  Patch_map patch;
+  UV_map uv;
+  DS::Merge_tree tree;
+  std::vector<Mesh::Face_index> seeds;
+
+  explicit Caller_outputs(Mesh& tm)
+  {
+    patch = tm.add_property_map<Mesh::Face_index, std::size_t>("f:caller", 0).first;
+    uv = tm.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:caller", K::Point_2(0, 0)).first;
+    for(Mesh::Face_index f : tm.faces())
+      patch[f] = 12345 + std::size_t(f);
+    for(Mesh::Halfedge_index h : tm.halfedges())
+      uv[h] = K::Point_2(7, double(std::size_t(h)));
+    tree.face_leaves.assign(3, 99);
+  }
+
+  void expect_untouched(const Mesh& tm, const std::string& what) const
+  {
+    std::size_t changed = 0;
+    for(Mesh::Face_index f : tm.faces())
+      changed += patch[f] != 12345 + std::size_t(f) ? 1 : 0;
+    for(Mesh::Halfedge_index h : tm.halfedges())
+      changed += uv[h] != K::Point_2(7, double(std::size_t(h))) ? 1 : 0;
+    EXPECT_EQ(changed, 0u) << what;
+    EXPECT_EQ(tree.face_leaves, std::vector<std::size_t>(3, 99)) << what;
+    EXPECT_TRUE(tree.merges.empty()) << what;
+    EXPECT_TRUE(seeds.empty()) << what;
+  }
+};
+
+TEST(Atlas, AFailedOrCancelledCallLeavesTheCallersMapsAsTheyWere)
+{
+  Mesh tm = load("elephant.off");
+  Caller_outputs out(tm);
+  const auto outputs = [&](const auto& np) {
+    return np.face_patch_map(out.patch).merge_tree(&out.tree).seeds_output_iterator(std::back_inserter(out.seeds));
+  };
+  // A callback that returns false cancels, in each stage; one that throws
+  // is let through. Before, the packing ran on the caller's maps, already
+  // written by the two stages before it.
+  std::vector<std::string> stages_seen;
+  for(const std::string stage : { "segmentation", "parameterization", "packing" })
+    for(unsigned int threads : { 1u, 2u })
+    {
+      std::size_t calls = 0;
+      const std::function<bool(const std::string&, std::size_t, std::size_t)> cancel_in_stage =
+        [&](const std::string& s, std::size_t, std::size_t) {
+          ++calls;
+          stages_seen.push_back(s);
+          return s != stage;
+        };
+      try
+      {
+        DS::uv_atlas(tm, out.uv, outputs(DS::parameters::progress_callback(cancel_in_stage).number_of_threads(threads)));
+        ADD_FAILURE() << "not cancelled in " << stage;
+      }
+      catch(const DS::Cancelled& e)
+      {
+        EXPECT_EQ(e.stage(), stage);
+      }
+      out.expect_untouched(tm, "cancelled in " + stage);
+      // Not called again once it asked to stop, on any thread.
+      EXPECT_EQ(stages_seen.back(), stage);
+      EXPECT_GT(calls, 0u);
+    }
+  EXPECT_NE(std::find(stages_seen.begin(), stages_seen.end(), "parameterization"), stages_seen.end());
+
+  const auto throw_in_packing = [](const std::string& s, std::size_t, std::size_t) {
+    if(s == "packing")
+      throw std::logic_error("user's own error");
+  };
+  EXPECT_THROW(DS::uv_atlas(tm, out.uv, outputs(DS::parameters::progress_callback(throw_in_packing))),
+               std::logic_error);
+  out.expect_untouched(tm, "the callback threw in the packing");
+
+  // 16 texels with 3 of padding hold fewer than (13/3)^2 < 19 charts: the
+  // segmentation's patches tell it before the parameterization.
+  Patch_map patches = tm.add_property_map<Mesh::Face_index, std::size_t>("f:patches", 0).first;
+  ASSERT_GE(DS::segment_into_disks(tm, patches, DS::parameters::number_of_seeds(40)), 19u);
+  std::vector<std::string> stages;
+  try
+  {
+    DS::uv_atlas(tm, out.uv,
+                 outputs(DS::parameters::number_of_seeds(40).texture_resolution(16u).padding_in_texels(3.)
+                           .progress_callback([&](const std::string& s, std::size_t, std::size_t) { stages.push_back(s); })));
+    ADD_FAILURE() << "19 or more charts packed with a padding of 3 on 16 texels";
+  }
+  catch(const DS::Input_error& e)
+  {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("padding_in_texels"), std::string::npos) << message;
+    EXPECT_NE(message.find("texture_resolution"), std::string::npos) << message;
+  }
+  EXPECT_EQ(std::find(stages.begin(), stages.end(), "parameterization"), stages.end());
+  out.expect_untouched(tm, "too much padding");
+
+  // The stages alone keep their maps too.
+  const auto cancel_all = [](const std::string&, std::size_t, std::size_t) { return false; };
+  EXPECT_THROW(DS::segment_into_disks(tm, out.patch, DS::parameters::merge_tree(&out.tree).progress_callback(cancel_all)),
+               DS::Cancelled);
+  EXPECT_THROW(DS::parameterize_patches(tm, patches, out.uv, DS::parameters::progress_callback(cancel_all)),
+               DS::Cancelled);
+  out.expect_untouched(tm, "stages cancelled");
+
+  // Then a call that goes through writes all of them; a callback that
+  // returns nothing, or an empty one, cannot cancel.
+  std::size_t calls = 0;
+  const DS::Atlas_report report = DS::uv_atlas(
+    tm, out.uv, outputs(DS::parameters::progress_callback([&](const std::string&, std::size_t, std::size_t) { ++calls; })));
+  EXPECT_GT(calls, 3u);
+  EXPECT_EQ(out.tree.face_leaves.size(), tm.number_of_faces());
+  EXPECT_FALSE(out.seeds.empty());
+  expect_valid_atlas(tm, Atlas{ out.patch, out.uv, report });
+  const std::function<bool(const std::string&, std::size_t, std::size_t)> empty;
+  EXPECT_NO_THROW(DS::uv_atlas(tm, out.uv, DS::parameters::progress_callback(empty)));
+}
+
 TEST(Atlas, ObjWrittenByTheToolReadsBackWithTheSameFacesAndUVs)
 {
 #ifndef DISK_UV_TOOL

@@ -155,5 +155,30 @@ cp "$data/elephant.off" "$work/keep.off"
 "$tool" "$work/keep.off" --colored "$work/keep.off" > /dev/null 2> "$work/err.txt"
 [ $? -eq 1 ] && cmp -s "$data/elephant.off" "$work/keep.off" && pass || fail "input file was overwritten"
 
+# --- SIGINT and SIGTERM stop the run at its next progress report; nothing is
+# written. The input comes through a FIFO: the tool has opened it (and
+# installed its handler) when the writer's open returns, and the signal
+# arrives before the mesh is whole, so the run is still ahead.
+# Job control, so that the background run does not start with SIGINT ignored.
+set -m
+for signal in INT TERM; do
+  rm -f "$work/signal.off" "$work/signal.obj"
+  mkfifo "$work/signal.off"
+  "$tool" "$work/signal.off" --allow-special-input -o "$work/signal.obj" > /dev/null 2> "$work/err.txt" &
+  pid=$!
+  # Bounded: should the tool end without opening the FIFO, the open would wait forever.
+  timeout 120 bash -c 'exec 3> "$1" && kill -s "$2" "$3" && cat "$4" >&3' _ \
+    "$work/signal.off" "$signal" "$pid" "$data/elephant.off" || kill "$pid" 2> /dev/null
+  wait "$pid"
+  status=$?
+  expected=$((128 + $(kill -l "$signal")))
+  [ "$status" -eq "$expected" ] && pass || fail "SIG$signal: exit status $status, expected $expected"
+  grep -q "^disk_uv: stopped by SIG$signal.* during the segmentation; no output was written$" "$work/err.txt" \
+    && pass || fail "SIG$signal: message '$(cat "$work/err.txt")'"
+  left=$(ls -a "$work" | grep "signal" | grep -vx "signal.off")
+  [ -z "$left" ] && pass || fail "SIG$signal: an output or temporary was left: $left"
+done
+set +m
+
 echo "disk_uv: $passed passed, $failures failed"
 [ "$failures" -eq 0 ]

@@ -214,8 +214,9 @@ std::size_t merge_disk_regions(const TriangleMesh& tm,
   std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> face_handles;
   internal::build_indexed_triangle_mesh(tm, np, m, face_handles);
 
+  auto patch_map = internal::checked_patch_map<TriangleMesh>(face_patch_map);
   const std::vector<std::vector<internal::Index> > regions =
-    internal::group_faces_by_label(internal::read_face_labels(face_handles, face_patch_map));
+    internal::group_faces_by_label(internal::read_face_labels(face_handles, patch_map));
   internal::Region_topology topology(m);
   std::vector<internal::Index> labels(m.number_of_faces());
   for(internal::Index r = 0; r < regions.size(); ++r)
@@ -231,7 +232,7 @@ std::size_t merge_disk_regions(const TriangleMesh& tm,
   const std::size_t count = internal::merge_regions(m, labels, regions.size(), threshold, tree);
   if(tree != nullptr)
     internal::face_leaves_to_input_order(m, *tree);
-  internal::write_face_labels(face_handles, labels, face_patch_map);
+  internal::write_face_labels(face_handles, labels, patch_map);
   return count;
 }
 

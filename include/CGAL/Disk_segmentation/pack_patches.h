@@ -105,6 +105,40 @@ Packing_settings packing_settings(const NamedParameters& np)
   return s;
 }
 
+// The most charts the padding leaves room for, at any scale. TIGHT: the
+// rectangles, grown by the padding on their right and top and so larger
+// than pad x pad, fill [pad, 1]^2: fewer than ((1 - pad) / pad)^2 of them
+// (an area bound: what the packer finds may be less). GRID: a cell of a
+// c x c grid is (1 - pad) / c wide and keeps pad inside around a chart of
+// positive size: c < (1 - pad) / pad.
+inline double packing_capacity(const Packing_settings& s)
+{
+  const double pad = s.padding / s.resolution;
+  if(!(pad > 0.))
+    return std::numeric_limits<double>::infinity();
+  const double across = (1. - pad) / pad;
+  if(s.method == Packing_method::GRID)
+  {
+    const double columns = std::ceil(across) - 1.;
+    return columns > 0. ? columns * columns : 0.;
+  }
+  return std::ceil(across * across) - 1.;
+}
+
+// Throws when `number_of_charts` cannot be packed at any scale, before the
+// work that would have found it out.
+inline void check_packing_capacity(const Packing_settings& s, std::size_t number_of_charts)
+{
+  const double capacity = packing_capacity(s);
+  if(static_cast<double>(number_of_charts) <= capacity)
+    return;
+  std::ostringstream message;
+  message << "pack_patches: padding_in_texels (" << s.padding << ") is too large to place " << number_of_charts
+          << " charts on a texture of " << s.resolution << " texels (texture_resolution): it leaves room for "
+          << static_cast<std::size_t>(capacity) << " at most";
+  throw Input_error(message.str());
+}
+
 template <typename Id>
 std::size_t checked_patch_id(const Id& id, std::size_t face, std::size_t number_of_faces)
 {
@@ -620,6 +654,53 @@ std::vector<Chart_similarity> grid_layout(const Chart_set<TriangleMesh>& charts,
 
 } // namespace internal
 
+namespace internal {
+
+// pack_patches() on maps of the right key types.
+template <typename TriangleMesh, typename FacePatchMap, typename UVMap, typename NamedParameters>
+Packing_report pack_checked_patches(const TriangleMesh& tm, FacePatchMap face_patch_map, UVMap uv_map,
+                                    const NamedParameters& np)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+  typedef typename boost::property_traits<UVMap>::value_type UV_point;
+
+  const Packing_settings settings = packing_settings(np);
+  Packing_report report;
+  if(faces(tm).empty())
+    return report;
+
+  const bool tight = settings.method == Packing_method::TIGHT;
+  Chart_set<TriangleMesh> charts;
+  collect_charts(tm, face_patch_map, uv_map, tight, np, charts);
+  check_packing_capacity(settings, charts.size());
+  frame_charts(settings.method, settings.threads, charts);
+
+  double global_scale = 0.;
+  const std::vector<Chart_similarity> placement =
+    tight ? tight_layout(charts, settings, global_scale) : grid_layout(charts, settings);
+
+  // Every halfedge of a face is written once, so nothing is moved twice.
+  for(std::size_t i = 0; i < charts.faces.size(); ++i)
+  {
+    const std::size_t p = charts.patch_of[i];
+    const Chart_similarity& sim = placement[p];
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(charts.faces[i], tm), tm))
+    {
+      const Packing_point q =
+        sim.rotation(relative_to(to_packing_point(get(uv_map, h)), charts.origin[p]));
+      put(uv_map, h, UV_point(sim.scale * q.x + sim.tx, sim.scale * q.y + sim.ty));
+    }
+  }
+  for(std::size_t p = 0; p < charts.size(); ++p)
+    report.efficiency += placement[p].scale * placement[p].scale * charts.uv_area[p];
+  report.number_of_charts = charts.size();
+  // Texels per unit of the input's length, not of the scaled one.
+  report.texels_per_unit = tight ? global_scale * settings.resolution * charts.length_scale : 0.;
+  return report;
+}
+
+} // namespace internal
+
 /// \ingroup PkgDiskSegmentationRef
 ///
 /// Places the UV charts of the patches of `tm` in the unit square without
@@ -761,41 +842,8 @@ Packing_report pack_patches(const TriangleMesh& tm,
 {
   static_assert(internal::Check_patch_map<FacePatchMap>::value, "");
   static_assert(internal::Check_named_parameters<NamedParameters>::value, "");
-  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
-  typedef typename boost::property_traits<UVMap>::value_type UV_point;
-
-  const internal::Packing_settings settings = internal::packing_settings(np);
-  Packing_report report;
-  if(faces(tm).empty())
-    return report;
-
-  const bool tight = settings.method == Packing_method::TIGHT;
-  internal::Chart_set<TriangleMesh> charts;
-  internal::collect_charts(tm, face_patch_map, uv_map, tight, np, charts);
-  internal::frame_charts(settings.method, settings.threads, charts);
-
-  double global_scale = 0.;
-  const std::vector<internal::Chart_similarity> placement =
-    tight ? internal::tight_layout(charts, settings, global_scale) : internal::grid_layout(charts, settings);
-
-  // Every halfedge of a face is written once, so nothing is moved twice.
-  for(std::size_t i = 0; i < charts.faces.size(); ++i)
-  {
-    const std::size_t p = charts.patch_of[i];
-    const internal::Chart_similarity& sim = placement[p];
-    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(charts.faces[i], tm), tm))
-    {
-      const internal::Packing_point q =
-        sim.rotation(internal::relative_to(internal::to_packing_point(get(uv_map, h)), charts.origin[p]));
-      put(uv_map, h, UV_point(sim.scale * q.x + sim.tx, sim.scale * q.y + sim.ty));
-    }
-  }
-  for(std::size_t p = 0; p < charts.size(); ++p)
-    report.efficiency += placement[p].scale * placement[p].scale * charts.uv_area[p];
-  report.number_of_charts = charts.size();
-  // Texels per unit of the input's length, not of the scaled one.
-  report.texels_per_unit = tight ? global_scale * settings.resolution * charts.length_scale : 0.;
-  return report;
+  return internal::pack_checked_patches(tm, internal::checked_patch_map<TriangleMesh>(face_patch_map),
+                                        internal::checked_uv_map<TriangleMesh>(uv_map), np);
 }
 
 } // namespace Disk_segmentation

@@ -1215,8 +1215,9 @@ Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, con
 ///     \cgalParamDefault{`0`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{progress_callback}
-///     \cgalParamDescription{called with `("parameterization", charts done, charts)` after each chart}
-///     \cgalParamType{`std::function<void(const std::string&, std::size_t, std::size_t)>`}
+///     \cgalParamDescription{called with `("parameterization", charts done, charts)` after each chart;
+///       a `false` result stops the work with `Cancelled`, the maps untouched (see \ref DS_Errors)}
+///     \cgalParamType{a callable of `(const std::string&, std::size_t, std::size_t)` returning `bool` or `void`}
 ///     \cgalParamDefault{none}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_point_map}
@@ -1268,7 +1269,8 @@ Parameterization_report parameterize_patches(const TriangleMesh& tm,
   Merge_tree tree;
   if(given != nullptr)
     tree = internal::face_leaves_to_mesh_order(input.mesh, *given);
-  return internal::parameterize_indexed_patches(tm, input, face_patch_map, uv_map, np,
+  return internal::parameterize_indexed_patches(tm, input, internal::checked_patch_map<TriangleMesh>(face_patch_map),
+                                                internal::checked_uv_map<TriangleMesh>(uv_map), np,
                                                 given != nullptr ? &tree : nullptr);
 }
 

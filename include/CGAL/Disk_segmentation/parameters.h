@@ -178,9 +178,10 @@ CGAL_DISK_SEGMENTATION_ADD_PARAMETER(padding_in_texels_t, padding_in_texels)
 /// Maximum number of threads; 0 lets TBB decide (`unsigned int`).
 CGAL_DISK_SEGMENTATION_ADD_PARAMETER(number_of_threads_t, number_of_threads)
 /// \ingroup PkgDiskSegmentationRef
-/// Called as `callback(stage, done, total)` while an atlas is computed
-/// (`std::function<void(const std::string&, std::size_t, std::size_t)>`);
-/// calls are serialized.
+/// Called as `callback(stage, done, total)` while an atlas is computed (any
+/// callable, e.g. `std::function<bool(const std::string&, std::size_t, std::size_t)>`);
+/// calls are serialized. A result convertible to `bool` that is `false`
+/// stops the computation with `Cancelled`; a `void` result only follows it.
 CGAL_DISK_SEGMENTATION_ADD_PARAMETER(progress_callback_t, progress_callback)
 /// \ingroup PkgDiskSegmentationRef
 /// Whether `parameterize_patches()` refuses patches that are not topological disks (`bool`).

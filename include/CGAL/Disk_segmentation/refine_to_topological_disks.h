@@ -197,11 +197,12 @@ std::size_t refine_to_topological_disks(const TriangleMesh& tm,
   std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> face_handles;
   internal::build_indexed_triangle_mesh(tm, np, m, face_handles);
 
+  auto patch_map = internal::checked_patch_map<TriangleMesh>(face_patch_map);
   internal::Voronoi_fps fps(m);
   std::vector<internal::Index> labels;
   const std::size_t count = internal::refine_regions(
-    m, fps, internal::group_faces_by_label(internal::read_face_labels(face_handles, face_patch_map)), k, labels);
-  internal::write_face_labels(face_handles, labels, face_patch_map);
+    m, fps, internal::group_faces_by_label(internal::read_face_labels(face_handles, patch_map)), k, labels);
+  internal::write_face_labels(face_handles, labels, patch_map);
   return count;
 }
 

@@ -11,6 +11,7 @@
 #include <CGAL/Disk_segmentation/voronoi_fps_segmentation.h>
 #include <CGAL/Disk_segmentation/internal/Border_smoother.h>
 #include <CGAL/Disk_segmentation/internal/Parameter_checks.h>
+#include <CGAL/Disk_segmentation/internal/Progress.h>
 
 #include <CGAL/Real_timer.h>
 
@@ -27,16 +28,19 @@ struct Segmentation_steps
 {
   std::size_t voronoi_cells = 0, refined_regions = 0, patches = 0;
   double voronoi_seconds = 0, refine_seconds = 0, merge_seconds = 0;
+  // For `seeds_output_iterator`, written by the caller once nothing can throw.
+  std::vector<Index> seeds;
 };
 
 // The whole method on an indexed mesh; `labels` receives the patch ids and
-// `tree` (if not null) the merges.
+// `tree` (if not null) the merges. Reports the end of each step to
+// `progress` (which may cancel).
 // With `smooth`, the borders of the refined regions lose their saw teeth
 // (Border_smoother) before they are merged.
 template <typename NamedParameters, typename FaceHandles>
 Segmentation_steps segment_indexed(const Indexed_triangle_mesh& m, const FaceHandles& face_handles,
                                    const NamedParameters& np, std::vector<Index>& labels, Merge_tree* tree,
-                                   bool smooth)
+                                   bool smooth, Progress& progress)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -50,9 +54,11 @@ Segmentation_steps segment_indexed(const Indexed_triangle_mesh& m, const FaceHan
   CGAL::Real_timer timer;
   timer.start();
   Voronoi_fps fps(m);
-  const std::vector<Index> seeds = voronoi_fps_labels(m, face_handles, fps, np, labels);
-  steps.voronoi_cells = seeds.size();
+  progress("segmentation", 0, 3);
+  steps.seeds = voronoi_fps_labels(m, face_handles, fps, np, labels);
+  steps.voronoi_cells = steps.seeds.size();
   steps.voronoi_seconds = timer.time();
+  progress("segmentation", 1, 3);
   timer.reset();
   steps.refined_regions = refine_regions(m, fps, group_faces_by_label(labels), k, labels);
   if(smooth)
@@ -63,10 +69,11 @@ Segmentation_steps segment_indexed(const Indexed_triangle_mesh& m, const FaceHan
     Border_smoother(m).smooth(labels, all);
   }
   steps.refine_seconds = timer.time();
+  progress("segmentation", 2, 3);
   timer.reset();
   steps.patches = merge_regions(m, labels, steps.refined_regions, threshold, tree);
   steps.merge_seconds = timer.time();
-  write_seeds(np, seeds, face_handles);
+  progress("segmentation", 3, 3);
   return steps;
 }
 
@@ -93,7 +100,9 @@ Segmentation_steps segment_indexed(const Indexed_triangle_mesh& m, const FaceHan
 ///        all those of the three functions (`number_of_seeds`, `first_seed`,
 ///        `random_seed`, `seeds_output_iterator`, `number_of_subsamples`,
 ///        `merge_threshold`, `merge_tree`, `smooth_borders`, `vertex_point_map`, `geom_traits`,
-///        `face_index_map`, `vertex_index_map`)
+///        `face_index_map`, `vertex_index_map`), and `progress_callback`, called with
+///        `("segmentation", s, 3)` after each step `s` (and `s = 0` first); its `false`
+///        stops the work with `Cancelled` (see \ref DS_Errors)
 ///
 /// With `smooth_borders(true)` (not in the paper; `false` by default here,
 /// `true` in `uv_atlas()`), the refined regions lose the saw teeth of their
@@ -103,8 +112,8 @@ Segmentation_steps segment_indexed(const Indexed_triangle_mesh& m, const FaceHan
 ///
 /// @return the number `P` of patches; every patch is a topological disk
 ///
-/// @throws Input_error as the three functions do; `face_patch_map` is not
-///         written then.
+/// @throws Input_error as the three functions do, and Cancelled; `face_patch_map`,
+///         `merge_tree` and `seeds_output_iterator` are not written then.
 ///
 /// Complexity, for `F` faces and `V` vertices: the sum of the three steps'
 /// (see each function), the mesh being read once in \f$ O(F + V) \f$ time;
@@ -126,15 +135,23 @@ std::size_t segment_into_disks(const TriangleMesh& tm,
   internal::build_indexed_triangle_mesh(tm, np, m, face_handles);
 
   std::vector<internal::Index> labels;
+  // The caller's tree is replaced only once nothing can throw.
   Merge_tree* tree = internal::merge_tree_parameter(np);
-  const std::size_t count = internal::segment_indexed(
-    m, face_handles, np, labels, tree,
-    CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::smooth_borders), false))
-    .patches;
+  Merge_tree staged_tree;
+  internal::Progress progress = internal::Progress::from(np);
+  const internal::Segmentation_steps steps = internal::segment_indexed(
+    m, face_handles, np, labels, tree != nullptr ? &staged_tree : nullptr,
+    CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::smooth_borders), false),
+    progress);
   if(tree != nullptr)
-    internal::face_leaves_to_input_order(m, *tree);
-  internal::write_face_labels(face_handles, labels, face_patch_map);
-  return count;
+  {
+    internal::face_leaves_to_input_order(m, staged_tree);
+    *tree = std::move(staged_tree);
+  }
+  internal::write_seeds(np, steps.seeds, face_handles);
+  auto patch_map = internal::checked_patch_map<TriangleMesh>(face_patch_map);
+  internal::write_face_labels(face_handles, labels, patch_map);
+  return steps.patches;
 }
 
 } // namespace Disk_segmentation

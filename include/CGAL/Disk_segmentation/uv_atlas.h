@@ -113,15 +113,21 @@ void check_uv_atlas_parameters(const NamedParameters& np = parameters::default_v
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{progress_callback}
 ///     \cgalParamDescription{called with the stage (`"segmentation"`, `"parameterization"`, `"packing"`)
-///       and a counter of work done out of a total}
-///     \cgalParamType{`std::function<void(const std::string&, std::size_t, std::size_t)>`}
+///       and a counter of work done out of a total; a `false` result stops the work with `Cancelled`
+///       (see \ref DS_Errors)}
+///     \cgalParamType{a callable of `(const std::string&, std::size_t, std::size_t)` returning `bool` or `void`}
 ///     \cgalParamDefault{none}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// @return the sizes and times of every stage, and the reports of `parameterize_patches()` and `pack_patches()`
 ///
-/// @throws Input_error on a bad mesh or parameter (see the three functions); the maps are not written then.
+/// @throws Input_error on a bad mesh or parameter (see the three functions), or when the segmentation
+///         gives more patches than the padding leaves room for (see \ref DS_Errors)
+/// @throws Cancelled when `progress_callback` returns `false`
+///
+/// Whatever it throws, the caller's maps, merge tree and seeds are as they were: the stages write
+/// to maps of their own, copied at the end (one UV per halfedge and one id per face more memory).
 ///
 /// Complexity: the sum of those of `segment_into_disks()`,
 /// `parameterize_patches()` and `pack_patches()`; the mesh is indexed once
@@ -135,26 +141,36 @@ Atlas_report uv_atlas(const TriangleMesh& tm, UVMap uv_map, const NamedParameter
   static_assert(internal::Check_named_parameters<NamedParameters>::value, "");
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
+  using CGAL::parameters::is_default_parameter;
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::face_descriptor face_descriptor;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
   typedef typename boost::property_map<TriangleMesh, CGAL::dynamic_face_property_t<std::size_t> >::const_type
-    Default_patch_map;
+    Staged_patch_map;
 
   CGAL::Real_timer total;
   total.start();
-  // Every stage's parameters are checked now, before anything is written.
+  // Every stage's parameters are checked now, before anything is computed.
   check_uv_atlas_parameters(np);
+  const auto user_uv_map = internal::checked_uv_map<TriangleMesh>(uv_map);
+  typedef typename boost::property_traits<std::decay_t<decltype(user_uv_map)> >::value_type UV_point;
+  typedef typename boost::property_map<TriangleMesh, CGAL::dynamic_halfedge_property_t<UV_point> >::const_type
+    Staged_uv_map;
+  const internal::Packing_settings packing = internal::packing_settings(np);
+
+  // The stages write to maps of their own: the caller's maps, merge tree and
+  // seeds are written at the end, once nothing can throw (a bad mesh, a
+  // padding too large for the charts, a cancellation).
+  const Staged_patch_map face_patch_map = get(CGAL::dynamic_face_property_t<std::size_t>(), tm);
+  const bool user_patches = !is_default_parameter<NamedParameters, CGAL::internal_np::face_patch_t>::value;
+  const auto user_patch_map = internal::checked_patch_map<TriangleMesh>(
+    choose_parameter(get_parameter(np, CGAL::internal_np::face_patch), face_patch_map));
+  static_assert(internal::Check_patch_map<std::decay_t<decltype(user_patch_map)> >::value, "");
   Atlas_report report;
   internal::Progress progress = internal::Progress::from(np);
+  Merge_tree tree;
+  std::vector<face_descriptor> seeds;
 
-  Default_patch_map default_patch_map = get(CGAL::dynamic_face_property_t<std::size_t>(), tm);
-  auto face_patch_map = choose_parameter(get_parameter(np, CGAL::internal_np::face_patch), default_patch_map);
-
-  // The merges guide the choice of charts (see parameterize_patches()).
-  Merge_tree own_tree;
-  Merge_tree* tree = internal::merge_tree_parameter(np);
-  if(tree == nullptr)
-    tree = &own_tree;
-
-  progress("segmentation", 0, 3);
   CGAL::Real_timer timer;
   {
     // One indexed mesh for the segmentation and the parameterization.
@@ -162,9 +178,14 @@ Atlas_report uv_atlas(const TriangleMesh& tm, UVMap uv_map, const NamedParameter
     {
       std::vector<internal::Index> labels;
       const internal::Segmentation_steps steps = internal::segment_indexed(
-        input.mesh, input.face_handles, np, labels, tree,
-        choose_parameter(get_parameter(np, Disk_segmentation::internal_np::smooth_borders), true));
+        input.mesh, input.face_handles, np, labels, &tree,
+        choose_parameter(get_parameter(np, Disk_segmentation::internal_np::smooth_borders), true), progress);
+      // Charts only split from here: too many patches for the padding can
+      // be told before the parameterization.
+      internal::check_packing_capacity(packing, steps.patches);
       internal::write_face_labels(input.face_handles, labels, face_patch_map);
+      for(internal::Index s : steps.seeds)
+        seeds.push_back(input.face_handles[s]);
       report.number_of_faces = input.mesh.number_of_faces();
       report.number_of_voronoi_cells = steps.voronoi_cells;
       report.number_of_refined_regions = steps.refined_regions;
@@ -172,21 +193,35 @@ Atlas_report uv_atlas(const TriangleMesh& tm, UVMap uv_map, const NamedParameter
       report.refine_seconds = steps.refine_seconds;
       report.merge_seconds = steps.merge_seconds;
     }
-    progress("segmentation", 3, 3);
 
     timer.start();
-    report.parameterization = internal::parameterize_indexed_patches(tm, input, face_patch_map, uv_map, np, tree);
-    if(tree != &own_tree)
-      internal::face_leaves_to_input_order(input.mesh, *tree);
+    const Staged_uv_map staged_uv = get(CGAL::dynamic_halfedge_property_t<UV_point>(), tm);
+    report.parameterization = internal::parameterize_indexed_patches(tm, input, face_patch_map, staged_uv, np, &tree);
+    internal::face_leaves_to_input_order(input.mesh, tree);
     report.number_of_charts = report.parameterization.charts.size();
     report.parameterization_seconds = timer.time();
-  }
 
-  progress("packing", 0, 1);
-  timer.reset();
-  report.packing = pack_patches(tm, face_patch_map, uv_map, np);
-  report.packing_seconds = timer.time();
-  progress("packing", 1, 1);
+    progress("packing", 0, 1);
+    timer.reset();
+    report.packing = internal::pack_checked_patches(tm, face_patch_map, staged_uv, np);
+    report.packing_seconds = timer.time();
+    progress("packing", 1, 1);
+
+    for(face_descriptor f : faces(tm))
+    {
+      if(user_patches)
+        put(user_patch_map, f, static_cast<typename boost::property_traits<
+                                 std::decay_t<decltype(user_patch_map)> >::value_type>(get(face_patch_map, f)));
+      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm), tm))
+        put(user_uv_map, h, get(staged_uv, h));
+    }
+  }
+  if(Merge_tree* user_tree = internal::merge_tree_parameter(np))
+    *user_tree = std::move(tree);
+  auto seeds_out =
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::seeds_output_iterator), CGAL::Emptyset_iterator());
+  for(face_descriptor f : seeds)
+    *seeds_out++ = f;
 
   report.total_seconds = total.time();
   return report;

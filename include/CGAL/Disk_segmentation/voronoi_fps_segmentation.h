@@ -194,7 +194,8 @@ std::size_t voronoi_fps_segmentation(const TriangleMesh& tm,
   const std::vector<internal::Index> seeds = internal::voronoi_fps_labels(m, face_handles, fps, np, labels);
 
   internal::write_seeds(np, seeds, face_handles);
-  internal::write_face_labels(face_handles, labels, face_patch_map);
+  auto patch_map = internal::checked_patch_map<TriangleMesh>(face_patch_map);
+  internal::write_face_labels(face_handles, labels, patch_map);
   return seeds.size();
 }
 

@@ -7,7 +7,9 @@
 // Exits with 1 on any failure.
 
 #include <CGAL/Disk_segmentation.h>
+#include <CGAL/Disk_segmentation/IO/write_atlas_GLB.h>
 #include <CGAL/Disk_segmentation/IO/write_atlas_OBJ.h>
+#include <CGAL/Disk_segmentation/IO/write_atlas_PNG.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/generators.h>
@@ -81,6 +83,22 @@ int main(int argc, char** argv)
       return 1;
     }
     std::cout << "OBJ atlas: " << groups << " chart groups" << std::endl;
+
+    // The writers of the component IO, with their libraries found by the config.
+    std::ostringstream glb, png;
+    DS::IO::write_atlas_GLB(glb, mesh, patch, uv);
+    DS::IO::write_atlas_PNG(png, mesh, patch, uv, 256);
+    if(glb.str().compare(0, 4, "glTF") != 0 || png.str().compare(1, 3, "PNG") != 0)
+    {
+      std::cerr << "consumer: the GLB or PNG atlas lacks its signature" << std::endl;
+      return 1;
+    }
+    std::cout << "GLB: " << glb.str().size() << " bytes, PNG: " << png.str().size() << " bytes" << std::endl;
+#ifdef CGAL_LINKED_WITH_TBB
+    std::cout << "TBB: yes" << std::endl;
+#else
+    std::cout << "TBB: no" << std::endl;
+#endif
     return count > 0 ? 0 : 1;
   }
   catch(const std::exception& e)

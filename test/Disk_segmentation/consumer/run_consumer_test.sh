@@ -90,5 +90,15 @@ output=$("$consumer_build/consumer" "$mesh") || { echo "$output"; fail "the cons
 echo "$output"
 echo "$output" | grep -Eq '^patches: [1-9][0-9]*' || fail "unexpected consumer output"
 
+# TBB is optional for a consumer: without it the same project configures,
+# builds and runs on one thread.
+echo "== the consumer again, without TBB"
+"$cmake_program" "${configure_args[@]}" -B "$consumer_build-without-tbb" -DCMAKE_DISABLE_FIND_PACKAGE_TBB=ON \
+  || fail "the consumer does not configure without TBB"
+"$cmake_program" --build "$consumer_build-without-tbb" -j2 || fail "the consumer does not build without TBB"
+output=$("$consumer_build-without-tbb/consumer" "$mesh") || { echo "$output"; fail "the consumer without TBB failed"; }
+echo "$output"
+echo "$output" | grep -qx 'TBB: no' || fail "the consumer built without TBB still links it"
+
 rm -rf "$prefix"
 echo "install_and_consume: OK"

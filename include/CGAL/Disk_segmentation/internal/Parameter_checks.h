@@ -13,7 +13,9 @@
 #include <CGAL/Disk_segmentation/parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/property_map.h>
 
+#include <boost/graph/graph_traits.hpp>
 #include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
@@ -68,6 +70,39 @@ struct Check_patch_map
                 "(patch ids), e.g. std::size_t");
   static constexpr bool value = true;
 };
+
+// A map keyed by the wrong kind of descriptor (a UV map per vertex, a patch
+// map per vertex) fails with one line below; the function then runs on a
+// map of the right key that does nothing, so that no error follows from
+// deep inside the package.
+template <typename Descriptor, typename Map>
+constexpr bool keyed_by = std::is_convertible<Descriptor, typename boost::property_traits<Map>::key_type>::value;
+
+template <typename TriangleMesh, typename UVMap>
+auto checked_uv_map(const UVMap& map)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+  constexpr bool ok = keyed_by<halfedge_descriptor, UVMap>;
+  static_assert(ok, "CGAL::Disk_segmentation: the UV map must have halfedge_descriptor as key type (one UV per "
+                    "corner: uv_map[h] is the UV of target(h) in face(h)), not vertex_descriptor or face_descriptor");
+  if constexpr(ok)
+    return map;
+  else
+    return CGAL::Constant_property_map<halfedge_descriptor, typename boost::property_traits<UVMap>::value_type>();
+}
+
+template <typename TriangleMesh, typename FacePatchMap>
+auto checked_patch_map(const FacePatchMap& map)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  constexpr bool ok = keyed_by<face_descriptor, FacePatchMap>;
+  static_assert(ok, "CGAL::Disk_segmentation: the face patch map must have face_descriptor as key type (one "
+                    "patch id per face), not vertex_descriptor or halfedge_descriptor");
+  if constexpr(ok)
+    return map;
+  else
+    return CGAL::Constant_property_map<face_descriptor, std::size_t>();
+}
 
 // A CGAL point (Kernel::Point_3 or any type with its kernel as `R`, which is
 // what CGAL::Kernel_traits reads): coordinates are read through its kernel.
