@@ -170,6 +170,7 @@ Atlas_report uv_atlas(const TriangleMesh& tm, UVMap uv_map, const NamedParameter
   internal::Progress progress = internal::Progress::from(np);
   Merge_tree tree;
   std::vector<face_descriptor> seeds;
+  const Staged_uv_map staged_uv = get(CGAL::dynamic_halfedge_property_t<UV_point>(), tm);
 
   CGAL::Real_timer timer;
   {
@@ -195,26 +196,26 @@ Atlas_report uv_atlas(const TriangleMesh& tm, UVMap uv_map, const NamedParameter
     }
 
     timer.start();
-    const Staged_uv_map staged_uv = get(CGAL::dynamic_halfedge_property_t<UV_point>(), tm);
     report.parameterization = internal::parameterize_indexed_patches(tm, input, face_patch_map, staged_uv, np, &tree);
     internal::face_leaves_to_input_order(input.mesh, tree);
     report.number_of_charts = report.parameterization.charts.size();
     report.parameterization_seconds = timer.time();
+  }
 
-    progress("packing", 0, 1);
-    timer.reset();
-    report.packing = internal::pack_checked_patches(tm, face_patch_map, staged_uv, np);
-    report.packing_seconds = timer.time();
-    progress("packing", 1, 1);
+  // The indexed mesh is freed: the packing reads the mesh again.
+  progress("packing", 0, 1);
+  timer.reset();
+  report.packing = internal::pack_checked_patches(tm, face_patch_map, staged_uv, np);
+  report.packing_seconds = timer.time();
+  progress("packing", 1, 1);
 
-    for(face_descriptor f : faces(tm))
-    {
-      if(user_patches)
-        put(user_patch_map, f, static_cast<typename boost::property_traits<
-                                 std::decay_t<decltype(user_patch_map)> >::value_type>(get(face_patch_map, f)));
-      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm), tm))
-        put(user_uv_map, h, get(staged_uv, h));
-    }
+  for(face_descriptor f : faces(tm))
+  {
+    if(user_patches)
+      put(user_patch_map, f, static_cast<typename boost::property_traits<
+                               std::decay_t<decltype(user_patch_map)> >::value_type>(get(face_patch_map, f)));
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm), tm))
+      put(user_uv_map, h, get(staged_uv, h));
   }
   if(Merge_tree* user_tree = internal::merge_tree_parameter(np))
     *user_tree = std::move(tree);
