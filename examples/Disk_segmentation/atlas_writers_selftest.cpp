@@ -22,6 +22,7 @@
 #  include <stb_image.h>
 #endif
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -250,15 +251,21 @@ void test_obj(const Test_mesh& t, const std::string& path, std::size_t expected_
   check(obj.vt.size() == expected_texture_vertices,
         "OBJ: " + std::to_string(expected_texture_vertices) + " 'vt' (got " + std::to_string(obj.vt.size()) + ")");
 
+  // Faces grouped by chart, by increasing id, in mesh order within a chart.
+  std::vector<std::pair<std::size_t, std::size_t> > chart_and_face;  // chart, index in faces()
+  for(Face_index fd : t.mesh.faces())
+    chart_and_face.emplace_back(std::size_t(t.patch[fd]), chart_and_face.size());
+  std::sort(chart_and_face.begin(), chart_and_face.end());
   const std::vector<std::vector<Corner> > faces = expected_corners(t);
   check(obj.f.size() == faces.size(), "OBJ: same face count");
   bool same_corners = obj.f.size() == faces.size();
-  for(std::size_t f = 0; same_corners && f < faces.size(); ++f)
+  for(std::size_t line = 0; same_corners && line < faces.size(); ++line)
   {
-    same_corners = obj.f[f].size() == faces[f].size();
+    const std::size_t f = chart_and_face[line].second;
+    same_corners = obj.f[line].size() == faces[f].size();
     for(std::size_t k = 0; same_corners && k < faces[f].size(); ++k)
     {
-      const long vi = obj.f[f][k][0] - 1, ti = obj.f[f][k][1] - 1;
+      const long vi = obj.f[line][k][0] - 1, ti = obj.f[line][k][1] - 1;
       same_corners = vi >= 0 && ti >= 0 && std::size_t(vi) < obj.v.size() && std::size_t(ti) < obj.vt.size();
       if(!same_corners)
         break;
@@ -267,24 +274,20 @@ void test_obj(const Test_mesh& t, const std::string& path, std::size_t expected_
                      obj.v[vi][2] == c.position.z() && obj.vt[ti][0] == c.uv.x() && obj.vt[ti][1] == c.uv.y();
     }
   }
-  check(same_corners, "OBJ: per-corner positions and UVs, in face order, exact");
+  check(same_corners, "OBJ: per-corner positions and UVs, grouped by chart, exact");
 
-  // Groups: one each time the chart changes between consecutive faces.
+  // Groups: one per chart, before its first face.
   std::vector<std::string> groups;
   std::vector<std::size_t> first_faces;
-  std::size_t f = 0;
-  for(Face_index fd : t.mesh.faces())
-  {
-    const std::string name = "chart_" + std::to_string(t.patch[fd]);
-    if(groups.empty() || groups.back() != name)
+  for(std::size_t line = 0; line < chart_and_face.size(); ++line)
+    if(line == 0 || chart_and_face[line].first != chart_and_face[line - 1].first)
     {
-      groups.push_back(name);
-      first_faces.push_back(f);
+      groups.push_back("chart_" + std::to_string(chart_and_face[line].first));
+      first_faces.push_back(line);
     }
-    ++f;
-  }
   check(obj.groups == groups && obj.group_first_face == first_faces,
-        "OBJ: a 'g chart_<id>' line at each chart change (" + std::to_string(obj.groups.size()) + " groups)");
+        "OBJ: one 'g chart_<id>' line per chart (" + std::to_string(obj.groups.size()) + " groups for " +
+          std::to_string(groups.size()) + " charts)");
 }
 
 // ---- GLB --------------------------------------------------------------------

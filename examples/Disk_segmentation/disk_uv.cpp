@@ -33,6 +33,7 @@
 #include "parameter_names.h"
 
 #include <CGAL/Disk_segmentation.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Real_timer.h>
 #include <CGAL/Surface_mesh.h>
@@ -44,10 +45,13 @@
 #include <charconv>
 #include <cmath>
 #include <csignal>
+#include <cstdint>
 #include <cstdio>
 #include <iostream>
 #include <limits>
 #include <string>
+#include <string_view>
+#include <vector>
 #include <unistd.h>
 
 namespace DS = CGAL::Disk_segmentation;
@@ -82,6 +86,168 @@ void write_patch_ids(std::ostream& out, const Mesh& mesh, const Patch_map& patch
 {
   for(Mesh::Face_index f : mesh.faces())
     out << patch[f] << '\n';
+}
+
+// --material-ids: one integer per face of the mesh as read, one per line
+// (the format of --patch-ids); blank lines and `#` comments are skipped.
+std::vector<std::int64_t> read_material_ids(const std::string& path, std::size_t faces, bool allow_special_input)
+{
+  std::string bytes;
+  try
+  {
+    bytes = disk_uv::read_input_file(path, allow_special_input, std::uint64_t(1) << 32);
+  }
+  catch(const disk_uv::Tool_error& e)
+  {
+    throw disk_uv::Tool_error(std::string("--material-ids: ") + e.what());
+  }
+  std::vector<std::int64_t> ids;
+  ids.reserve(faces);
+  std::size_t line_number = 0, begin = 0;
+  while(begin < bytes.size())
+  {
+    std::size_t end = bytes.find('\n', begin);
+    if(end == std::string::npos)
+      end = bytes.size();
+    ++line_number;
+    std::string_view line(bytes.data() + begin, end - begin);
+    begin = end + 1;
+    const std::size_t comment = line.find('#');
+    if(comment != std::string_view::npos)
+      line = line.substr(0, comment);
+    const std::size_t first = line.find_first_not_of(" \t\r");
+    if(first == std::string_view::npos)
+      continue;
+    line = line.substr(first, line.find_last_not_of(" \t\r") + 1 - first);
+    std::int64_t id = 0;
+    const auto result = std::from_chars(line.data(), line.data() + line.size(), id);
+    if(result.ec != std::errc() || result.ptr != line.data() + line.size())
+      throw disk_uv::Tool_error("--material-ids: '" + path + "' line " + std::to_string(line_number) + ": '" +
+                                std::string(line.substr(0, 40)) + "' is not an integer");
+    ids.push_back(id);
+  }
+  if(ids.size() != faces)
+    throw disk_uv::Tool_error("--material-ids: '" + path + "' has " + std::to_string(ids.size()) + " ids for " +
+                              std::to_string(faces) + " faces (one per face, in the order of the faces)");
+  return ids;
+}
+
+// Several inputs, one atlas (uv_atlas_of_meshes()): the meshes as read,
+// their maps and what the library reported.
+struct Several_atlas
+{
+  std::vector<std::string> inputs;
+  std::vector<Mesh> meshes;
+  std::vector<disk_uv::Read_changes> changes;
+  std::vector<Patch_map> patches;
+  std::vector<UV_map> uvs;
+  DS::Multi_mesh_atlas_report report;
+  double read_seconds = 0;
+};
+
+template <typename NamedParameters>
+Several_atlas atlas_of_several(const std::vector<std::string>& inputs, const disk_uv::Read_options& read_options,
+                               const NamedParameters& np)
+{
+  Several_atlas s;
+  s.inputs = inputs;
+  s.meshes.resize(inputs.size());
+  CGAL::Real_timer timer;
+  timer.start();
+  for(std::size_t i = 0; i < inputs.size(); ++i)
+  {
+    s.changes.push_back(disk_uv::read_triangle_mesh(inputs[i], s.meshes[i], read_options));
+    s.patches.push_back(s.meshes[i].add_property_map<Mesh::Face_index, std::size_t>("f:patch", 0).first);
+    s.uvs.push_back(s.meshes[i].add_property_map<Mesh::Halfedge_index, Kernel::Point_2>("h:uv").first);
+  }
+  s.read_seconds = timer.time();
+  std::vector<const Mesh*> pointers;
+  for(const Mesh& m : s.meshes)
+    pointers.push_back(&m);
+  try
+  {
+    s.report = DS::uv_atlas_of_meshes(pointers, s.uvs, s.patches, np);
+  }
+  catch(const DS::Input_error& e)
+  {
+    // "mesh #i: ..." names the file the user gave.
+    std::string message = e.what();
+    for(std::size_t i = 0; i < inputs.size(); ++i)
+    {
+      const std::string tag = "mesh #" + std::to_string(i) + ": ";
+      if(message.compare(0, tag.size(), tag) == 0)
+        message = "'" + inputs[i] + "': " + message.substr(tag.size());
+    }
+    throw DS::Input_error(message);
+  }
+  return s;
+}
+
+// The meshes one after the other in `all`, with their charts and UVs: what
+// the writers write.
+void combine(const Several_atlas& s, Mesh& all, Patch_map& patch, UV_map& uv)
+{
+  patch = all.add_property_map<Mesh::Face_index, std::size_t>("f:patch", 0).first;
+  uv = all.add_property_map<Mesh::Halfedge_index, Kernel::Point_2>("h:uv", Kernel::Point_2(0, 0)).first;
+  for(std::size_t i = 0; i < s.meshes.size(); ++i)
+  {
+    std::vector<std::pair<Mesh::Halfedge_index, Mesh::Halfedge_index> > halfedges;
+    std::vector<std::pair<Mesh::Face_index, Mesh::Face_index> > faces;
+    CGAL::copy_face_graph(s.meshes[i], all,
+                          CGAL::parameters::halfedge_to_halfedge_output_iterator(std::back_inserter(halfedges))
+                            .face_to_face_output_iterator(std::back_inserter(faces)));
+    for(const auto& f : faces)
+      patch[f.second] = s.patches[i][f.first];
+    for(const auto& h : halfedges)
+      if(!s.meshes[i].is_border(h.first))
+        uv[h.second] = s.uvs[i][h.first];
+  }
+}
+
+nlohmann::json several_report_json(const Several_atlas& s, const std::string& method, const std::string& packer)
+{
+  nlohmann::json meshes = nlohmann::json::array();
+  for(std::size_t i = 0; i < s.meshes.size(); ++i)
+  {
+    DS::Atlas_report r = s.report.meshes[i];
+    r.packing = s.report.packing;  // the common packing
+    nlohmann::json mesh = disk_uv::atlas_report_json(s.inputs[i], s.meshes[i].number_of_vertices(), r, method,
+                                                     packer, 0., s.changes[i]);
+    mesh["first_chart"] = s.report.first_chart[i];
+    meshes.push_back(std::move(mesh));
+  }
+  return { { "inputs", meshes },
+           { "charts", s.report.first_chart.back() },
+           { "packing", { { "efficiency", s.report.packing.efficiency },
+                          { "texels_per_unit", s.report.packing.texels_per_unit } } },
+           { "seconds", { { "read", s.read_seconds }, { "packing", s.report.packing_seconds },
+                          { "total", s.report.total_seconds } } },
+           { "peak_rss_mb", disk_uv::peak_rss_mb() } };
+}
+
+void print_several_summary(const Several_atlas& s)
+{
+  for(std::size_t i = 0; i < s.meshes.size(); ++i)
+  {
+    const DS::Atlas_report& r = s.report.meshes[i];
+    std::printf("%s: %zu faces -> %zu charts (ids %zu to %zu), %zu fallbacks, %zu invalid\n", s.inputs[i].c_str(),
+                r.number_of_faces, r.number_of_charts, s.report.first_chart[i], s.report.first_chart[i + 1] - 1,
+                r.parameterization.number_of_fallbacks, r.parameterization.number_of_invalid_charts);
+  }
+  std::printf("%zu meshes -> %zu charts in one atlas, packing %.1f%%; time read %.3f s, pack %.3f s, total %.3f s\n",
+              s.meshes.size(), s.report.first_chart.back(), 100 * s.report.packing.efficiency, s.read_seconds,
+              s.report.packing_seconds, s.report.total_seconds);
+}
+
+bool several_charts_are_valid(const Several_atlas& s)
+{
+  std::size_t invalid = 0;
+  for(const DS::Atlas_report& r : s.report.meshes)
+    invalid += r.parameterization.number_of_invalid_charts;
+  if(invalid > 0)
+    std::cerr << "disk_uv: error: " << invalid << " charts have invalid UVs (run without --no-fallback to repair them)"
+              << std::endl;
+  return invalid == 0;
 }
 
 // CLI11 reads "-1" into an unsigned option as a huge number and saturates
@@ -165,17 +331,20 @@ int main(int argc, char** argv)
 {
   catch_stop_signals();
   CLI::App app{"disk_uv: UV atlas of a triangle mesh through a segmentation into topological disks"};
-  std::string input, obj_path, glb_path, png_path, report_path, patch_ids_path, colored_path;
+  std::vector<std::string> inputs;
+  std::string obj_path, glb_path, png_path, report_path, patch_ids_path, colored_path, material_ids_path;
   std::string method_name = DS::to_string(DS::default_parameterization_method), packer_name = "tight";
   std::size_t n = 10, k = 5;
   double threshold = DS::regular_polygon_threshold(5), padding = 2;
   DS::Distortion_bound bound;
   bool unbounded = false, rough_borders = false;
-  std::size_t max_chart_faces = DS::default_max_chart_faces;
+  std::size_t max_chart_faces = DS::default_max_chart_faces, max_charts = 0;
   unsigned int resolution = 1024, threads = 0;
   bool no_fallback = false, quiet = false;
   disk_uv::Read_options read_options;
-  app.add_option("INPUT", input, "input triangle mesh (.off .obj .ply .stl .ts)")->required();
+  app.add_option("INPUT", inputs,
+                 "input triangle mesh (.off .obj .ply .stl .ts); several: one atlas for all, each mesh "
+                 "segmented alone")->required();
   app.add_option("-o,--obj", obj_path, "write the atlas as OBJ (per-corner vt, one group per chart)")->check(non_empty_path);
   app.add_option("--glb", glb_path, "write the atlas as binary glTF 2.0 (TEXCOORD_0)")->check(non_empty_path);
   app.add_option("--atlas-png", png_path, "draw the atlas layout (flipped triangles in red)")->check(non_empty_path);
@@ -210,11 +379,19 @@ int main(int argc, char** argv)
                "keep the saw teeth of chart borders (the paper's segmentation; smoothed and straightened by default)");
   app.add_option("--max-chart-faces", max_chart_faces,
                  "split larger patches before parameterizing them (bounds memory)")->capture_default_str()->check(non_negative_count);
+  app.add_option("--max-charts", max_charts,
+                 "chart budget: merge charts past the distortion bound until there are at most this many "
+                 "(0: no budget)")->capture_default_str()->check(non_negative_count);
   app.add_option("--threads", threads, "maximum number of threads (0: all)")->capture_default_str()->check(non_negative_count);
   app.add_flag("--repair", read_options.repair,
                "merge duplicated vertices, drop duplicated and degenerate faces, orient the faces and "
                "cut the mesh at non-manifold edges and vertices");
-  app.add_flag("--triangulate", read_options.triangulate, "triangulate faces with more than 3 vertices");
+  app.add_flag("--triangulate", read_options.triangulate,
+               "triangulate faces with more than 3 vertices (a polygon split by the charts is then moved whole "
+               "into one of them)");
+  app.add_option("--material-ids", material_ids_path,
+                 "one integer per input face (after --triangulate), one per line: faces with different ids never "
+                 "share a chart")->check(non_empty_path);
   app.add_flag("--allow-special-input", read_options.allow_special_input,
                "read INPUT even if it is not a regular file (a pipe, a device: read to its end, at most 4 GiB); "
                "without it such an input is refused");
@@ -230,6 +407,7 @@ int main(int argc, char** argv)
   }
 
   Progress_display display(!quiet && ::isatty(2));
+  const std::string& input = inputs.front();
   try
   {
     if(!png_path.empty() && (resolution == 0 || resolution > CGAL::Disk_segmentation::IO::max_atlas_png_resolution))
@@ -241,6 +419,7 @@ int main(int argc, char** argv)
     std::vector<disk_uv::Output_files::Writer> writers;
     const DS::Atlas_report* report_ptr = nullptr;
     const disk_uv::Read_changes* changes_ptr = nullptr;
+    const nlohmann::json* several_report = nullptr;
     double read_seconds = 0;
     Mesh mesh;
     Patch_map patch;
@@ -248,7 +427,7 @@ int main(int argc, char** argv)
     auto add_output = [&](const char* option, const std::string& path, disk_uv::Output_files::Writer writer) {
       if(path.empty())
         return;
-      outputs.add(option, path, input);
+      outputs.add(option, path, inputs);
       writers.push_back(std::move(writer));
     };
     add_output("-o", obj_path, [&](std::ostream& o) { CGAL::Disk_segmentation::IO::write_atlas_OBJ(o, mesh, patch, uv); });
@@ -258,9 +437,12 @@ int main(int argc, char** argv)
     add_output("--patch-ids", patch_ids_path, [&](std::ostream& o) { write_patch_ids(o, mesh, patch); });
     add_output("--colored", colored_path, [&](std::ostream& o) { write_colored_ply(o, mesh, patch); });
     add_output("--report", report_path, [&](std::ostream& o) {
-      o << disk_uv::atlas_report_json(input, mesh.number_of_vertices(), *report_ptr, method_name, packer_name,
-                                     read_seconds, *changes_ptr).dump(2)
-        << '\n';
+      if(several_report != nullptr)
+        o << several_report->dump(2) << '\n';
+      else
+        o << disk_uv::atlas_report_json(input, mesh.number_of_vertices(), *report_ptr, method_name, packer_name,
+                                       read_seconds, *changes_ptr).dump(2)
+          << '\n';
     });
 
     const DS::Parameterization_method method = DS::parameterization_method_from_string(method_name);
@@ -270,6 +452,7 @@ int main(int argc, char** argv)
     else throw disk_uv::Tool_error("unknown packer '" + packer_name + "' (expected tight or grid)");
 
     const double inf = std::numeric_limits<double>::infinity();
+    const std::size_t no_budget = (std::numeric_limits<std::size_t>::max)();
     const auto settings =
       DS::parameters::number_of_seeds(n).number_of_subsamples(k).merge_threshold(threshold)
         .parameterization_method(method).use_fallback(!no_fallback)
@@ -280,9 +463,32 @@ int main(int argc, char** argv)
         .min_convexity(unbounded ? 0. : bound.min_convexity)
         .smooth_borders(!rough_borders)
         .straighten_borders(!rough_borders)
-        .max_chart_faces(max_chart_faces).packing_method(packer)
+        .max_chart_faces(max_chart_faces).max_number_of_charts(max_charts == 0 ? no_budget : max_charts)
+        .packing_method(packer)
         .texture_resolution(resolution).padding_in_texels(padding).number_of_threads(threads);
     DS::check_uv_atlas_parameters(settings);
+    const auto keep_going = std::function<bool(const std::string&, std::size_t, std::size_t)>(
+      [&display](const std::string& s, std::size_t d, std::size_t t) {
+        display(s, d, t);
+        return stop_signal == 0;
+      });
+
+    if(inputs.size() > 1)
+    {
+      if(!material_ids_path.empty())
+        throw disk_uv::Tool_error("--material-ids takes one INPUT, not " + std::to_string(inputs.size()));
+      const Several_atlas several = atlas_of_several(inputs, read_options, settings.progress_callback(keep_going));
+      display.finish();
+      if(stop_signal != 0)
+        throw DS::Cancelled("packing");
+      combine(several, mesh, patch, uv);
+      const nlohmann::json json = several_report_json(several, method_name, packer_name);
+      several_report = &json;
+      outputs.write_all(writers);
+      if(!quiet)
+        print_several_summary(several);
+      return several_charts_are_valid(several) ? 0 : 1;
+    }
 
     CGAL::Real_timer timer;
     timer.start();
@@ -290,15 +496,24 @@ int main(int argc, char** argv)
     read_seconds = timer.time();
     patch = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:patch", 0).first;
     uv = mesh.add_property_map<Mesh::Halfedge_index, Kernel::Point_2>("h:uv", Kernel::Point_2(0, 0)).first;
+    // Both maps are always given (each face its own polygon, one material):
+    // one instantiation of uv_atlas().
+    auto polygon = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:polygon", 0).first;
+    auto material = mesh.add_property_map<Mesh::Face_index, std::int64_t>("f:material", 0).first;
+    for(Mesh::Face_index f : mesh.faces())
+      polygon[f] = changes.polygon_of_face.empty() ? std::size_t(f) : changes.polygon_of_face[std::size_t(f)];
+    if(!material_ids_path.empty())
+    {
+      const std::vector<std::int64_t> ids =
+        read_material_ids(material_ids_path, mesh.number_of_faces(), read_options.allow_special_input);
+      for(Mesh::Face_index f : mesh.faces())
+        material[f] = ids[std::size_t(f)];
+    }
 
     const DS::Atlas_report report = DS::uv_atlas(
       mesh, uv,
-      settings.face_patch_map(patch)
-        .progress_callback(std::function<bool(const std::string&, std::size_t, std::size_t)>(
-          [&display](const std::string& s, std::size_t d, std::size_t t) {
-            display(s, d, t);
-            return stop_signal == 0;
-          })));
+      settings.face_patch_map(patch).face_polygon_map(polygon).face_material_map(material)
+        .progress_callback(keep_going));
     display.finish();
     // From here the writing's own handler (output_files.h) takes over: a
     // signal removes the temporaries and ends the run.
@@ -324,6 +539,15 @@ int main(int argc, char** argv)
                   100 * report.packing.efficiency, read_seconds,
                   report.voronoi_seconds + report.refine_seconds + report.merge_seconds,
                   report.parameterization_seconds, report.packing_seconds);
+    if(!quiet && report.polygons_moved_whole + report.polygons_left_across_charts > 0)
+      std::printf("%s: %zu polygons split by the charts moved whole into one of them, %zu left across charts\n",
+                  input.c_str(), report.polygons_moved_whole, report.polygons_left_across_charts);
+    if(!report.parameterization.chart_budget_met)
+      std::cerr << "disk_uv: warning: " << report.number_of_charts << " charts, over --max-charts (" << max_charts
+                << "): no two adjacent charts unite into one disk with a valid map" << std::endl;
+    else if(!quiet && report.parameterization.charts_before_budget > 0)
+      std::printf("%s: %zu charts met the distortion bound; merged past it to --max-charts (%zu)\n", input.c_str(),
+                  report.parameterization.charts_before_budget, max_charts);
     // With the fallback off, invalid charts are a failure the caller must see.
     if(report.parameterization.number_of_invalid_charts > 0)
     {

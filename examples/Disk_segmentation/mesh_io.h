@@ -233,6 +233,9 @@ struct Read_changes
   std::size_t vertices_removed = 0;    // merged or isolated, net of the ones the repair duplicated
   std::size_t vertices_added = 0;      // duplicated by the repair to make the mesh manifold
   std::size_t pinched_vertices_split = 0;  // vertex copies given to the extra fans of pinched vertices
+  // With `triangulate`: the polygon (its position among the faces read,
+  // after the repair) of each face of the mesh. Empty otherwise.
+  std::vector<std::size_t> polygon_of_face;
 };
 
 // Reads a polygon soup in the format named by `ext` (off, obj, ply, stl, ts)
@@ -284,16 +287,22 @@ Read_changes prepare_triangle_soup(std::vector<Point>& points, std::vector<std::
   {
     std::vector<std::vector<std::size_t> > triangles;
     triangles.reserve(polygons.size());
-    for(std::vector<std::size_t>& polygon : polygons)
+    changes.polygon_of_face.reserve(polygons.size());
+    for(std::size_t p = 0; p < polygons.size(); ++p)
     {
+      std::vector<std::size_t>& polygon = polygons[p];
       if(polygon.size() <= 3)
       {
         triangles.push_back(std::move(polygon));
+        changes.polygon_of_face.push_back(p);
         continue;
       }
       bool used_fan = false;
       for(std::vector<std::size_t>& t : triangulate_polygon(points, polygon, used_fan))
+      {
         triangles.push_back(std::move(t));
+        changes.polygon_of_face.push_back(p);
+      }
       ++changes.polygons_triangulated;
       changes.fan_triangulations += used_fan ? 1 : 0;
     }

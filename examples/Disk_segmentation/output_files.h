@@ -224,7 +224,7 @@ public:
   // through symbolic links), or something written through such as
   // /dev/null or a pipe with a reader. It must not be the input file, nor
   // the same file as another output. Throws Tool_error naming the problem.
-  void add(const std::string& option, const std::string& path, const std::string& input)
+  void add(const std::string& option, const std::string& path, const std::vector<std::string>& inputs)
   {
     Output o;
     o.option = option;
@@ -249,10 +249,13 @@ public:
     else
       fail(o, "it is neither a regular file, a character device nor a pipe");
 
-    struct stat input_status;
-    if(o.exists && ::stat(input.c_str(), &input_status) == 0 && input_status.st_dev == o.device &&
-       input_status.st_ino == o.inode)
-      fail(o, "it is the input file");
+    for(const std::string& input : inputs)
+    {
+      struct stat input_status;
+      if(o.exists && ::stat(input.c_str(), &input_status) == 0 && input_status.st_dev == o.device &&
+         input_status.st_ino == o.inode)
+        fail(o, "it is the input file");
+    }
     for(const Output& other : outputs_)
       if(o.same_file(other) && !(o.write_through && S_ISCHR(status.st_mode)))
         throw Tool_error("'" + path + "' is given to both " + other.option + " and " + option +

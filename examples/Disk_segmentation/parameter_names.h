@@ -25,9 +25,9 @@ struct Parameter_name
   const char* argument;  // disk_uv.atlas()'s keyword
 };
 
-inline const std::array<Parameter_name, 15>& parameter_names()
+inline const std::array<Parameter_name, 16>& parameter_names()
 {
-  static const std::array<Parameter_name, 15> names = { {
+  static const std::array<Parameter_name, 16> names = { {
     { "number_of_seeds", "-n/--seeds", "n (seeds)" },
     { "number_of_subsamples", "-k/--subsamples", "k (subsamples)" },
     { "merge_threshold", "--threshold", "threshold" },
@@ -37,6 +37,7 @@ inline const std::array<Parameter_name, 15>& parameter_names()
     { "padding_in_texels", "--padding", "padding" },
     { "number_of_threads", "--threads", "threads" },
     { "max_chart_faces", "--max-chart-faces", "max_chart_faces" },
+    { "max_number_of_charts", "--max-charts", "max_charts" },
     { "max_angle_distortion", "--max-angle-distortion", "max_angle_distortion" },
     { "max_area_distortion", "--max-area-distortion", "max_area_distortion" },
     { "max_stretch_p95", "--max-stretch-p95", "max_stretch_p95" },

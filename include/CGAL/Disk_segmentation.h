@@ -21,6 +21,7 @@
 #include <CGAL/Disk_segmentation/pack_patches.h>
 #include <CGAL/Disk_segmentation/patch_faces.h>
 #include <CGAL/Disk_segmentation/uv_atlas.h>
+#include <CGAL/Disk_segmentation/uv_atlas_of_meshes.h>
 #include <CGAL/Disk_segmentation/atlas_quality.h>
 
 #endif // CGAL_DISK_SEGMENTATION_H

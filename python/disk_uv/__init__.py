@@ -41,7 +41,8 @@ class Atlas:
     Attributes:
         vertices, faces: the mesh the atlas belongs to (the arrays given).
         uvs: (F, 3, 2) float64, the UV of each face's corners, in [0, 1].
-        chart_ids: (F,) uint32, the chart of each face (0 .. charts - 1).
+        chart_ids: (F,) uint32, the chart of each face (0 .. charts - 1; with
+            several meshes in one atlas, numbered across them).
         report: dict with the fields of ``disk_uv --report`` (``charts``
             holds one dict per chart with its method and distortion).
         seconds: per-stage times (``report["seconds"]``).
@@ -80,7 +81,7 @@ def _checked_progress(progress):
 
 def _atlas_options(method, max_angle_distortion, max_area_distortion, max_stretch, max_area_scale,
                    max_stretch_p95, min_convexity, unbounded, rough_borders, resolution, padding, threads, seed, n, k,
-                   threshold, packer, max_chart_faces, use_fallback):
+                   threshold, packer, max_chart_faces, use_fallback, max_charts):
     return {
         "method": method, "max_angle_distortion": max_angle_distortion,
         "max_area_distortion": max_area_distortion, "max_stretch": max_stretch,
@@ -88,11 +89,11 @@ def _atlas_options(method, max_angle_distortion, max_area_distortion, max_stretc
         "min_convexity": min_convexity, "unbounded": bool(unbounded),
         "rough_borders": bool(rough_borders), "resolution": resolution, "padding": padding, "threads": threads,
         "seed": seed, "n": n, "k": k, "threshold": threshold, "packer": packer,
-        "max_chart_faces": max_chart_faces, "use_fallback": bool(use_fallback),
+        "max_chart_faces": max_chart_faces, "use_fallback": bool(use_fallback), "max_charts": max_charts,
     }
 
 
-def atlas(vertices, faces, method=_disk_uv.default_parameterization_method,
+def atlas(vertices, faces=None, method=_disk_uv.default_parameterization_method,
           max_angle_distortion=_disk_uv.default_max_angle_distortion,
           max_area_distortion=_disk_uv.default_max_area_distortion,
           max_stretch=_disk_uv.default_max_stretch,
@@ -101,12 +102,21 @@ def atlas(vertices, faces, method=_disk_uv.default_parameterization_method,
           min_convexity=_disk_uv.default_min_convexity,
           unbounded=False, rough_borders=False, resolution=1024, padding=2.0, threads=0, seed=None,
           n=10, k=5, threshold=_disk_uv.default_merge_threshold, packer="tight",
-          max_chart_faces=_disk_uv.default_max_chart_faces, use_fallback=True, face_groups=None, progress=None):
+          max_chart_faces=_disk_uv.default_max_chart_faces, use_fallback=True, max_charts=None, face_groups=None,
+          materials=None, progress=None):
     """UV atlas of a triangle mesh; the options are those of the ``disk_uv`` tool.
 
+    ``atlas([(vertices, faces), ...])`` makes one atlas for several meshes
+    (xatlas' AddMesh, then Generate): each mesh gets the charts it would get
+    alone, all charts are packed together, and the result is a list of
+    :class:`Atlas`, one per mesh, with chart ids numbered across the meshes
+    (``report["first_chart"]``); ``face_groups``, ``materials`` and
+    ``seed`` then take one mesh only.
+
     Args:
-        vertices: (N, 3) array of real numbers.
-        faces: (F, 3) array of vertex indices (counterclockwise, a manifold mesh).
+        vertices: (N, 3) array of real numbers, or a list of (vertices, faces) pairs.
+        faces: (F, 3) array of vertex indices (counterclockwise, a manifold
+            mesh); None with a list of meshes.
         method: per-chart parameterization: "arap" (default), "conformal"
             (border pinned on a circle), "lscm", "mvc" or "tutte".
         max_angle_distortion, max_area_distortion, max_stretch, max_area_scale,
@@ -123,6 +133,11 @@ def atlas(vertices, faces, method=_disk_uv.default_parameterization_method,
         packer: "tight" (one texel density) or "grid" (the paper's).
         max_chart_faces: larger patches are split before parameterization.
         use_fallback: redo invalid charts with other methods (else keep them, reported).
+        max_charts: None (no budget) or the most charts wanted. When the
+            bound leaves more, adjacent charts are merged past the bound
+            (valid maps only, least added distortion first) down to this
+            number if they can be; ``report["parameterization"]`` says
+            ``chart_budget_met`` and ``charts_before_budget``.
         face_groups: None, or (F,) integers: faces with the same value are
             one polygon of the caller's mesh (triangulated), which should
             not be cut by a seam. A polygon split between two charts is
@@ -130,6 +145,9 @@ def atlas(vertices, faces, method=_disk_uv.default_parameterization_method,
             are then parameterized and packed again without the distortion
             bound. ``report["polygons"]`` counts the polygons moved and
             those left across charts.
+        materials: None, or (F,) integers: faces with different values
+            (materials, parts) never share a chart; the mesh is cut along
+            the edges between them.
         progress: None, or a callable ``progress(stage, done, total)``
             called as the work goes ("segmentation", "parameterization",
             "packing"), from another thread than the caller's; returning
@@ -144,9 +162,17 @@ def atlas(vertices, faces, method=_disk_uv.default_parameterization_method,
     """
     options = _atlas_options(method, max_angle_distortion, max_area_distortion, max_stretch, max_area_scale,
                              max_stretch_p95, min_convexity, unbounded, rough_borders, resolution, padding, threads, seed, n,
-                             k, threshold, packer, max_chart_faces, use_fallback)
+                             k, threshold, packer, max_chart_faces, use_fallback, max_charts)
     options["face_groups"] = face_groups
+    options["materials"] = materials
     options["progress"] = _checked_progress(progress)
+    if faces is None:
+        if not isinstance(vertices, (list, tuple)):
+            raise ArgumentTypeError("atlas() takes vertices and faces, or a list of (vertices, faces) pairs, not %s"
+                                    % type(vertices).__name__)
+        results = _disk_uv.atlas_of_meshes(list(vertices), options)
+        return [Atlas(v, f, r["uvs"], r["chart_ids"], json.loads(r["report"]))
+                for (v, f), r in zip(vertices, results)]
     result = _disk_uv.atlas(vertices, faces, options)
     return Atlas(vertices, faces, result["uvs"], result["chart_ids"], json.loads(result["report"]))
 

@@ -475,6 +475,7 @@ def add_atlas_arguments(parser):
     group.add_argument("--min-convexity", type=float, default=d.default_min_convexity)
     group.add_argument("--unbounded", action="store_true", help="no distortion or convexity bound (the paper's charts)")
     group.add_argument("--rough-borders", action="store_true", help="keep the paper's saw-toothed borders")
+    group.add_argument("--max-charts", type=int, default=0, help="chart budget per mesh (0: no budget)")
     group.add_argument("--threads", type=int, default=1, help="threads per mesh (default 1: one mesh per core)")
     group.add_argument("--repair", action="store_true", help="repair each mesh's soup before the atlas")
     group.add_argument("--triangulate", action="store_true", help="triangulate polygons")
@@ -513,7 +514,8 @@ def main(argv=None):
                          max_angle_distortion=args.max_angle_distortion,
                          max_area_distortion=args.max_area_distortion, max_stretch=args.max_stretch,
                          max_area_scale=args.max_area_scale, max_stretch_p95=args.max_stretch_p95,
-                         min_convexity=args.min_convexity, unbounded=args.unbounded, rough_borders=args.rough_borders, threads=args.threads)
+                         min_convexity=args.min_convexity, unbounded=args.unbounded, rough_borders=args.rough_borders, threads=args.threads,
+                         max_charts=args.max_charts or None)
     import disk_uv
     import numpy
     try:

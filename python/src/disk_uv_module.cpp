@@ -12,9 +12,7 @@
 #include <CGAL/Disk_segmentation.h>
 #include <CGAL/Disk_segmentation/IO/write_atlas_GLB.h>
 #include <CGAL/Disk_segmentation/IO/write_atlas_OBJ.h>
-#include <CGAL/Disk_segmentation/internal/Face_group_moves.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Real_timer.h>
 #include <CGAL/Surface_mesh.h>
 
 #include "atlas_report_json.h"
@@ -287,52 +285,6 @@ py::dict atlas_result(const Soup& soup, const Mesh& mesh, const Patch_map& patch
   return result;
 }
 
-// Polygons of the caller's mesh (faces with the same group id) are made
-// whole, in order of their first face: see internal::Face_group_mover.
-// Returns the number of polygons moved and of those left split; ids are
-// then renumbered 0..P-1 in order of first face.
-std::pair<std::size_t, std::size_t> keep_polygons_whole(const Mesh& mesh, const std::vector<std::int64_t>& group,
-                                                        std::vector<std::size_t>& ids)
-{
-  namespace DSI = CGAL::Disk_segmentation::internal;
-  DSI::Indexed_triangle_mesh m;
-  std::vector<Mesh::Face_index> face_handles;
-  DSI::build_indexed_triangle_mesh(mesh, DS::parameters::default_values(), m, face_handles);
-  std::vector<DSI::Index> indexed(ids.size()), labels(ids.size());
-  for(DSI::Index i = 0; i < face_handles.size(); ++i)
-  {
-    indexed[std::size_t(face_handles[i])] = i;
-    labels[i] = static_cast<DSI::Index>(ids[std::size_t(face_handles[i])]);
-  }
-  std::vector<std::size_t> by_group(group.size());
-  std::iota(by_group.begin(), by_group.end(), std::size_t(0));
-  std::stable_sort(by_group.begin(), by_group.end(), [&](std::size_t a, std::size_t b) { return group[a] < group[b]; });
-  std::vector<std::vector<DSI::Index> > groups;
-  for(std::size_t i = 0; i < by_group.size(); ++i)
-  {
-    if(i == 0 || group[by_group[i]] != group[by_group[i - 1]])
-      groups.emplace_back();
-    groups.back().push_back(indexed[by_group[i]]);
-  }
-  // In order of first face: each list starts with its group's first face.
-  std::sort(groups.begin(), groups.end(), [&](const auto& a, const auto& b) {
-    return std::size_t(face_handles[a.front()]) < std::size_t(face_handles[b.front()]);
-  });
-  const DSI::Face_group_moves moves = DSI::keep_face_groups_whole(m, groups, labels);
-  for(DSI::Index i = 0; i < face_handles.size(); ++i)
-    ids[std::size_t(face_handles[i])] = labels[i];
-  std::vector<std::size_t> renumber(ids.size(), std::size_t(-1));
-  std::size_t next = 0;
-  for(std::size_t& id : ids)
-  {
-    if(renumber[id] == std::size_t(-1))
-      renumber[id] = next++;
-    id = renumber[id];
-  }
-  return std::make_pair(moves.moved, moves.left);
-}
-
-
 typedef std::function<bool(const std::string&, std::size_t, std::size_t)> Keep_going;
 
 // Runs `work(keep_going)` (the library's computation, without the GIL) on a
@@ -410,21 +362,26 @@ void run_interruptible(const py::object& progress, const std::function<void(cons
     std::rethrow_exception(work_error);
 }
 
-py::dict run_atlas(const py::handle& vertices, const py::handle& faces, const py::dict& o)
+// An optional (F,) integer array of the options: empty when None.
+std::vector<std::int64_t> face_values(const py::dict& o, const char* name, const char* what, const Soup& soup)
 {
-  Soup soup = soup_from_arrays(vertices, faces);
-  std::vector<std::int64_t> groups;
-  if(!o["face_groups"].is_none())
-  {
-    const Index_array g = Index_array::ensure(as_numpy_array(o["face_groups"], "face_groups"));
-    if(!g || g.ndim() != 1 || std::size_t(g.shape(0)) != soup.faces.size())
-      throw Bad_argument("face_groups must have shape (F,): one polygon id per face");
-    groups.assign(g.data(), g.data() + g.shape(0));
-  }
+  std::vector<std::int64_t> values;
+  if(o[name].is_none())
+    return values;
+  const Index_array a = Index_array::ensure(as_numpy_array(o[name], name));
+  if(!a || a.ndim() != 1 || std::size_t(a.shape(0)) != soup.faces.size())
+    throw Bad_argument(std::string(name) + " must have shape (F,): " + what);
+  values.assign(a.data(), a.data() + a.shape(0));
+  return values;
+}
+
+// The options of atlas() as the library's named parameters, checked.
+auto atlas_settings(const py::dict& o, std::string& method_name, std::string& packer_name)
+{
   bool unbounded = false;
   const DS::Distortion_bound bound = bound_from(o, unbounded);
-  const std::string method_name = choice_option(o, "method", "arap, conformal, lscm, mvc or tutte");
-  const std::string packer_name = choice_option(o, "packer", "tight or grid");
+  method_name = choice_option(o, "method", "arap, conformal, lscm, mvc or tutte");
+  packer_name = choice_option(o, "packer", "tight or grid");
   DS::Parameterization_method method;
   try
   {
@@ -444,6 +401,11 @@ py::dict run_atlas(const py::handle& vertices, const py::handle& faces, const py
   const std::size_t threads = count_option(o, "threads");
   if(threads > 4096)
     throw Bad_argument("threads must be at most 4096");
+  // None: no chart budget.
+  const std::size_t max_charts =
+    o["max_charts"].is_none() ? DS::internal::no_chart_budget : count_option(o, "max_charts");
+  if(max_charts == 0)
+    throw Bad_argument("max_charts must be None or at least 1");
   const double inf = std::numeric_limits<double>::infinity();
   const auto settings =
     DS::parameters::number_of_seeds(count_option(o, "n")).number_of_subsamples(count_option(o, "k"))
@@ -456,10 +418,20 @@ py::dict run_atlas(const py::handle& vertices, const py::handle& faces, const py
       .min_convexity(unbounded ? 0. : bound.min_convexity)
       .smooth_borders(!o["rough_borders"].cast<bool>())
       .straighten_borders(!o["rough_borders"].cast<bool>())
-      .max_chart_faces(count_option(o, "max_chart_faces")).packing_method(packer)
+      .max_chart_faces(count_option(o, "max_chart_faces")).max_number_of_charts(max_charts).packing_method(packer)
       .texture_resolution(static_cast<unsigned int>(resolution)).padding_in_texels(real_option(o, "padding"))
       .number_of_threads(static_cast<unsigned int>(threads));
   DS::check_uv_atlas_parameters(settings);
+  return settings;
+}
+
+py::dict run_atlas(const py::handle& vertices, const py::handle& faces, const py::dict& o)
+{
+  Soup soup = soup_from_arrays(vertices, faces);
+  const std::vector<std::int64_t> groups = face_values(o, "face_groups", "one polygon id per face", soup);
+  const std::vector<std::int64_t> materials = face_values(o, "materials", "one material id per face", soup);
+  std::string method_name, packer_name;
+  const auto settings = atlas_settings(o, method_name, packer_name);
   const py::object seed = o["seed"];
   const bool seeded = !seed.is_none();
   unsigned int seed_value = 0;
@@ -475,45 +447,100 @@ py::dict run_atlas(const py::handle& vertices, const py::handle& faces, const py
   build_mesh(soup, mesh);
   Patch_map patch = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:patch", 0).first;
   UV_map uv = mesh.add_property_map<Mesh::Halfedge_index, Kernel::Point_2>("h:uv", Kernel::Point_2(0, 0)).first;
+  // Both maps are always given (each face its own polygon, one material):
+  // one instantiation of uv_atlas() per chain.
+  auto polygon = mesh.add_property_map<Mesh::Face_index, std::int64_t>("f:polygon", 0).first;
+  auto material = mesh.add_property_map<Mesh::Face_index, std::int64_t>("f:material", 0).first;
+  for(Mesh::Face_index f : mesh.faces())
+  {
+    polygon[f] = groups.empty() ? std::int64_t(f) : groups[std::size_t(f)];
+    material[f] = materials.empty() ? 0 : materials[std::size_t(f)];
+  }
+  const auto with_maps = settings.face_patch_map(patch).face_polygon_map(polygon).face_material_map(material);
   DS::Atlas_report report;
-  std::pair<std::size_t, std::size_t> polygon_moves(0, 0);
   run_interruptible(o["progress"], [&](const Keep_going& keep_going) {
     if(seeded)
-      report = DS::uv_atlas(mesh, uv,
-                            settings.face_patch_map(patch).random_seed(seed_value).progress_callback(keep_going));
+      report = DS::uv_atlas(mesh, uv, with_maps.random_seed(seed_value).progress_callback(keep_going));
     else
-      report = DS::uv_atlas(mesh, uv, settings.face_patch_map(patch).progress_callback(keep_going));
-    if(!groups.empty())
-    {
-      std::vector<std::size_t> ids(mesh.number_of_faces());
-      for(Mesh::Face_index f : mesh.faces())
-        ids[std::size_t(f)] = patch[f];
-      polygon_moves = keep_polygons_whole(mesh, groups, ids);
-      if(polygon_moves.first > 0)
-      {
-        // The moved charts are parameterized and packed again, without the
-        // bound: a split would cut polygons again.
-        for(Mesh::Face_index f : mesh.faces())
-          patch[f] = ids[std::size_t(f)];
-        CGAL::Real_timer timer;
-        timer.start();
-        const auto again = settings.max_angle_distortion(inf).max_area_distortion(inf).max_stretch(inf)
-                             .max_area_scale(inf).max_stretch_p95(inf).min_convexity(0.);
-        report.parameterization = DS::parameterize_patches(mesh, patch, uv, again.progress_callback(keep_going));
-        report.number_of_charts = report.parameterization.charts.size();
-        report.packing = DS::pack_patches(mesh, patch, uv, again);
-        report.total_seconds += timer.time();
-      }
-    }
+      report = DS::uv_atlas(mesh, uv, with_maps.progress_callback(keep_going));
   });
   disk_uv::Read_changes changes;
   changes.pinched_vertices_split = soup.pinched_vertices_split;
   nlohmann::json json =
     disk_uv::atlas_report_json("<arrays>", mesh.number_of_vertices(), report, method_name, packer_name, 0., changes);
-  if(!groups.empty())
-    json["polygons"] = { { "moved_whole_into_one_chart", polygon_moves.first },
-                         { "left_across_charts", polygon_moves.second } };
   return atlas_result(soup, mesh, patch, uv, json.dump());
+}
+
+// atlas([(vertices, faces), ...]): one atlas for several meshes, each
+// segmented alone (uv_atlas_of_meshes()); one result per mesh.
+py::list run_atlas_of_meshes(const py::sequence& parts, const py::dict& o)
+{
+  for(const char* name : { "face_groups", "materials", "seed" })
+    if(!o[name].is_none())
+      throw Bad_argument(std::string(name) + " takes one mesh; with several meshes it must be None");
+  std::vector<Soup> soups;
+  for(std::size_t i = 0; i < parts.size(); ++i)
+  {
+    const py::object part = parts[i];
+    if(!py::isinstance<py::sequence>(part) || py::isinstance<py::str>(part) || py::len(part) != 2)
+      throw Bad_type("meshes[" + std::to_string(i) + "] must be a pair (vertices, faces), not " + type_name(part));
+    const std::string where = "meshes[" + std::to_string(i) + "]: ";
+    try
+    {
+      soups.push_back(soup_from_arrays(part[py::int_(0)], part[py::int_(1)]));
+    }
+    catch(const Bad_type& e)
+    {
+      throw Bad_type(where + e.what());
+    }
+    catch(const Bad_argument& e)
+    {
+      throw Bad_argument(where + e.what());
+    }
+  }
+  if(soups.empty())
+    throw Bad_argument("meshes is empty: give at least one (vertices, faces) pair");
+  std::string method_name, packer_name;
+  const auto settings = atlas_settings(o, method_name, packer_name);
+  std::vector<Mesh> meshes(soups.size());
+  std::vector<const Mesh*> pointers;
+  std::vector<Patch_map> patches;
+  std::vector<UV_map> uvs;
+  for(std::size_t i = 0; i < soups.size(); ++i)
+  {
+    build_mesh(soups[i], meshes[i]);
+    pointers.push_back(&meshes[i]);
+    patches.push_back(meshes[i].add_property_map<Mesh::Face_index, std::size_t>("f:patch", 0).first);
+    uvs.push_back(meshes[i].add_property_map<Mesh::Halfedge_index, Kernel::Point_2>("h:uv").first);
+  }
+  DS::Multi_mesh_atlas_report report;
+  run_interruptible(o["progress"], [&](const Keep_going& keep_going) {
+    try
+    {
+      report = DS::uv_atlas_of_meshes(pointers, uvs, patches, settings.progress_callback(keep_going));
+    }
+    catch(const DS::Input_error& e)
+    {
+      std::string message = e.what();
+      if(message.compare(0, 6, "mesh #") == 0)
+        message = "meshes[" + message.substr(6, message.find(':') - 6) + "]" + message.substr(message.find(':'));
+      throw DS::Input_error(message);
+    }
+  });
+  py::list results;
+  for(std::size_t i = 0; i < meshes.size(); ++i)
+  {
+    DS::Atlas_report r = report.meshes[i];
+    r.packing = report.packing;  // the common packing
+    disk_uv::Read_changes changes;
+    changes.pinched_vertices_split = soups[i].pinched_vertices_split;
+    nlohmann::json json = disk_uv::atlas_report_json("<arrays>", meshes[i].number_of_vertices(), r, method_name,
+                                                     packer_name, 0., changes);
+    json["first_chart"] = report.first_chart[i];
+    json["total_charts"] = report.first_chart.back();
+    results.append(atlas_result(soups[i], meshes[i], patches[i], uvs[i], json.dump()));
+  }
+  return results;
 }
 
 py::array_t<std::uint32_t> run_segment(const py::handle& vertices, const py::handle& faces, const py::dict& o)
@@ -684,6 +711,7 @@ PYBIND11_MODULE(_disk_uv, m)
     }
   });
   m.def("atlas", &run_atlas, py::arg("vertices"), py::arg("faces"), py::arg("options"));
+  m.def("atlas_of_meshes", &run_atlas_of_meshes, py::arg("meshes"), py::arg("options"));
   m.def("segment", &run_segment, py::arg("vertices"), py::arg("faces"), py::arg("options"));
   m.def("xatlas_arrays", &xatlas_arrays, py::arg("faces"), py::arg("uvs"), py::arg("chart_ids"));
   m.def("load", &load_mesh, py::arg("path"), py::arg("repair"), py::arg("triangulate"));

@@ -30,7 +30,7 @@ import numpy  # noqa: E402
 
 import disk_uv  # noqa: E402
 import disk_uv_unwrap  # noqa: E402
-from atlas_checks import atlas_problems, obj_atlas_problems  # noqa: E402
+from atlas_checks import atlas_problems, components, obj_atlas_problems, read_obj  # noqa: E402
 
 DATA = os.environ.get("DISK_UV_DATA", os.path.join(source, "test", "Disk_segmentation", "data"))
 
@@ -93,6 +93,11 @@ def run():
     check(bpy.ops.uv.disk_uv_unwrap() == {"FINISHED"}, "unwrap of the elephant failed")
     check(elephant.data.uv_layers.active is not None, "no UV map written")
     export_and_check(elephant, folder, "elephant")
+    # A chart budget: as many UV islands as asked, still a valid atlas.
+    check(bpy.ops.uv.disk_uv_unwrap(max_charts=20) == {"FINISHED"}, "unwrap with a chart budget failed")
+    export_and_check(elephant, folder, "elephant_budget")
+    islands = components([uv_ids for _, uv_ids in read_obj(os.path.join(folder, "elephant_budget.obj"))[2]])
+    check(len(set(islands)) == 20, "max_charts=20 gave %d UV islands" % len(set(islands)))
 
     # Two quad objects at once (a torus: all quads, genus 1; a UV sphere:
     # quads and triangle fans), their polygons kept.
@@ -115,6 +120,29 @@ def run():
     check(any(len(p.vertices) == 4 for p in torus.data.polygons), "the torus has no quads")
     export_and_check(torus, folder, "torus")
     export_and_check(sphere, folder, "sphere")
+
+    # Two materials on the torus (the polygons of one half): no UV island spans both.
+    for name in ("disk_uv_red", "disk_uv_blue"):
+        torus.data.materials.append(bpy.data.materials.new(name))
+    half = len(torus.data.polygons) // 2
+    for p in torus.data.polygons:
+        p.material_index = 1 if p.index < half else 0
+    bpy.ops.object.select_all(action="DESELECT")
+    torus.select_set(True)
+    bpy.context.view_layer.objects.active = torus
+    def islands_spanning_two_materials(label):
+        export_and_check(torus, folder, label)
+        obj_faces = read_obj(os.path.join(folder, label + ".obj"))[2]
+        check(len(obj_faces) == len(torus.data.polygons), "the OBJ does not list the polygons")
+        materials_of_island = {}
+        for polygon, island in enumerate(components([uv_ids for _, uv_ids in obj_faces])):
+            materials_of_island.setdefault(island, set()).add(torus.data.polygons[polygon].material_index)
+        return sum(len(m) > 1 for m in materials_of_island.values())
+
+    check(bpy.ops.uv.disk_uv_unwrap(split_by_material=False) == {"FINISHED"}, "unwrap ignoring materials failed")
+    check(islands_spanning_two_materials("torus_mixed") > 0, "no island spans two materials anyway: void check")
+    check(bpy.ops.uv.disk_uv_unwrap() == {"FINISHED"}, "unwrap with two materials failed")
+    check(islands_spanning_two_materials("torus_materials") == 0, "a UV island spans two materials")
 
     # From edit mode: the mode is restored.
     bpy.ops.object.select_all(action="DESELECT")

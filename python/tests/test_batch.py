@@ -101,3 +101,5 @@ def test_manifest_and_bad_arguments(tmp_path):
     # The flags as typed, not the module's keywords or the library's parameters.
     wrong = batch(str(manifest), str(out), "--max-stretch", "0.5")
     assert wrong.returncode == 2 and "error: --max-stretch must be > 1" in wrong.stderr, wrong.stderr
+    wrong = batch(str(manifest), str(out), "--max-charts", "-1")
+    assert wrong.returncode == 2 and "error: --max-charts must be non-negative" in wrong.stderr, wrong.stderr

@@ -73,7 +73,9 @@ def test_same_atlas_as_the_command_line_tool(tmp_path, name):
     assert (tool_ids == atlas.chart_ids).all()
     positions, tool_uvs, tool_faces = read_obj(obj_path)
     assert len(tool_faces) == len(faces)
-    for f, (vs, ts) in enumerate(tool_faces):
+    # The OBJ lists the faces chart by chart, in input order within a chart.
+    order = numpy.argsort(atlas.chart_ids, kind="stable")
+    for f, (vs, ts) in zip(order, tool_faces):
         assert vs == list(faces[f])
         assert numpy.allclose(tool_uvs[ts], atlas.uvs[f], atol=1e-9)
 
@@ -101,6 +103,19 @@ def test_report_and_options():
     assert disk_uv.atlas(vertices, faces, min_convexity=0.9).number_of_charts > default.number_of_charts
 
 
+def test_a_chart_budget_merges_charts_into_valid_disks():
+    vertices, faces = mesh("elephant.off")
+    free = disk_uv.atlas(vertices, faces)
+    budget = free.number_of_charts // 2
+    merged = disk_uv.atlas(vertices, faces, max_charts=budget)
+    assert merged.number_of_charts == budget
+    report = merged.report["parameterization"]
+    assert report["chart_budget_met"] and report["charts_before_budget"] == free.number_of_charts
+    _, indices, uvs = disk_uv.parametrize(vertices, faces, max_charts=budget)
+    assert atlas_problems(uvs[indices], indices) == []
+    assert not disk_uv.atlas(vertices, faces, max_charts=1).report["parameterization"]["chart_budget_met"]
+
+
 def test_segment_gives_disks_of_the_paper():
     vertices, faces = mesh("eight.off")
     ids = disk_uv.segment(vertices, faces, n=6, k=5)
@@ -118,6 +133,41 @@ def test_polygons_stay_whole_when_face_groups_are_given():
     across = sum(len(numpy.unique(atlas.chart_ids[groups == g])) > 1 for g in numpy.unique(groups))
     assert across == atlas.report["polygons"]["left_across_charts"] == 0
     assert atlas_problems(list(atlas.uvs)) == []
+
+
+def test_several_meshes_share_one_atlas_and_keep_their_charts():
+    parts = [mesh("elephant.off"), mesh("knot1.off"), mesh("eight.off")]
+    atlases = disk_uv.atlas(parts)
+    assert len(atlases) == 3
+    first = 0
+    for (vertices, faces), atlas in zip(parts, atlases):
+        alone = disk_uv.atlas(vertices, faces)
+        assert atlas.report["first_chart"] == first
+        assert (atlas.chart_ids - first == alone.chart_ids).all()
+        first += alone.number_of_charts
+    assert atlases[0].report["total_charts"] == first
+    # No overlap across meshes: the charts of all of them checked as one atlas.
+    assert atlas_problems([uv for atlas in atlases for uv in atlas.uvs]) == []
+    with pytest.raises(ValueError, match="seed takes one mesh"):
+        disk_uv.atlas(parts, seed=3)
+    with pytest.raises(TypeError, match=r"meshes\[1\] must be a pair"):
+        disk_uv.atlas([parts[0], "mesh"])
+    with pytest.raises(ValueError, match=r"meshes\[1\]: "):
+        disk_uv.atlas([parts[0], (parts[1][0], parts[1][1][:, :2])])
+
+
+def test_no_chart_spans_two_materials():
+    vertices, faces = mesh("elephant.off")
+    centroids = vertices[faces].mean(axis=1)
+    materials = (centroids[:, 0] > 0).astype(numpy.int64) + 2 * (centroids[:, 2] > 0)
+    atlas = disk_uv.atlas(vertices, faces, materials=materials)
+    for chart in numpy.unique(atlas.chart_ids):
+        assert len(numpy.unique(materials[atlas.chart_ids == chart])) == 1
+        chart_faces = faces[atlas.chart_ids == chart]
+        assert euler_characteristic(chart_faces) == 1 and len(numpy.unique(components(chart_faces))) == 1
+    assert atlas_problems(list(atlas.uvs)) == []
+    with pytest.raises(ValueError, match="materials must have shape"):
+        disk_uv.atlas(vertices, faces, materials=materials[:-1])
 
 
 def test_large_face_groups_over_many_charts_leave_every_chart_a_disk():
@@ -217,6 +267,7 @@ def test_bad_arrays_raise_value_error(change, message):
     ({"min_convexity": 1.0}, "min_convexity"),
     ({"padding": float("nan")}, "padding"),
     ({"seed": -1}, "seed"),
+    ({"max_charts": 0}, "max_charts must be None or at least 1"),
     ({"face_groups": numpy.zeros(3)}, "face_groups"),
 ])
 def test_bad_options_raise_value_error(options, message):

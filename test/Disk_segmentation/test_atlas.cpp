@@ -10,7 +10,9 @@
 #include "test_meshes.h"
 
 #include <CGAL/Disk_segmentation.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Random.h>
@@ -21,9 +23,11 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstdint>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <set>
@@ -277,6 +281,189 @@ TEST(Atlas, MergingAcceptedChartsLeavesFewerChartsWithinTheBound)
     fewer += merged.report.number_of_charts < separate.report.number_of_charts ? 1 : 0;
   }
   EXPECT_GT(fewer, 0u) << "no chart was merged on any mesh: the test is void";
+}
+
+TEST(Atlas, AChartBudgetIsMetWithValidDisksOrReportedAsUnmet)
+{
+  Mesh free_mesh = load("elephant.off");
+  const Atlas free = make_atlas(free_mesh, DS::parameters::number_of_threads(2u));
+  const std::size_t bound_charts = free.report.number_of_charts;
+  ASSERT_GT(bound_charts, 8u) << "too few charts under the bound to test a budget";
+  EXPECT_EQ(free.report.parameterization.charts_before_budget, 0u);
+
+  // A budget the bound already meets changes nothing.
+  Mesh roomy_mesh = load("elephant.off");
+  const Atlas roomy = make_atlas(roomy_mesh, DS::parameters::max_number_of_charts(bound_charts).number_of_threads(2u));
+  std::size_t moved = 0;
+  for(Mesh::Halfedge_index h : free_mesh.halfedges())
+    if(!free_mesh.is_border(h) && free.uv[h] != roomy.uv[h])
+      ++moved;
+  EXPECT_EQ(moved, 0u);
+
+  // Half the charts: merged past the bound into disks with valid maps, the same on 1 and 2 threads.
+  const std::size_t budget = bound_charts / 2;
+  Mesh one_mesh = load("elephant.off"), two_mesh = load("elephant.off");
+  const Atlas one = make_atlas(one_mesh, DS::parameters::max_number_of_charts(budget).number_of_threads(1u));
+  const Atlas two = make_atlas(two_mesh, DS::parameters::max_number_of_charts(budget).number_of_threads(2u));
+  expect_valid_atlas(two_mesh, two);
+  EXPECT_EQ(two.report.number_of_charts, budget);
+  EXPECT_TRUE(two.report.parameterization.chart_budget_met);
+  EXPECT_EQ(two.report.parameterization.charts_before_budget, bound_charts);
+  EXPECT_FALSE(charts_meet(two_mesh, two, DS::Distortion_bound())) << "the budget did not need to pass the bound";
+  moved = 0;
+  for(Mesh::Halfedge_index h : one_mesh.halfedges())
+    if(!one_mesh.is_border(h) && one.uv[h] != two.uv[h])
+      ++moved;
+  EXPECT_EQ(moved, 0u);
+
+  // One chart cannot hold a closed surface: the budget is reported unmet, the atlas stays valid.
+  Mesh tight_mesh = load("elephant.off");
+  const Atlas tight =
+    make_atlas(tight_mesh, DS::parameters::max_number_of_charts(std::size_t(1)).number_of_threads(2u));
+  expect_valid_atlas(tight_mesh, tight);
+  EXPECT_GT(tight.report.number_of_charts, 1u);
+  EXPECT_LT(tight.report.number_of_charts, budget);
+  EXPECT_FALSE(tight.report.parameterization.chart_budget_met);
+
+  Mesh tm = load("elephant.off");
+  EXPECT_THROW(make_atlas(tm, DS::parameters::max_number_of_charts(std::size_t(0)).number_of_threads(2u)),
+               DS::Input_error);
+}
+
+namespace {
+
+typedef Mesh::Property_map<Mesh::Face_index, std::int64_t> Face_value_map;
+
+// uv_atlas() with a polygon and a material per face: one chain type for the tests below.
+Atlas atlas_with_groups(Mesh& tm, Face_value_map polygon, Face_value_map material, unsigned threads)
+{
+  return make_atlas(tm, DS::parameters::face_polygon_map(polygon).face_material_map(material).number_of_threads(threads));
+}
+
+} // namespace
+
+TEST(Atlas, NoChartSpansTwoMaterials)
+{
+  // Two materials in a 3D checkerboard of cells a third of the elephant
+  // wide: many pieces, and vertices where they alternate around.
+  Mesh tm = load("elephant.off");
+  Face_value_map polygon = tm.add_property_map<Mesh::Face_index, std::int64_t>("f:polygon", 0).first;
+  Face_value_map material = tm.add_property_map<Mesh::Face_index, std::int64_t>("f:material", 0).first;
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(tm);
+  std::set<std::int64_t> used;
+  for(Mesh::Face_index f : tm.faces())
+  {
+    polygon[f] = std::int64_t(f);
+    K::Point_3 c = CGAL::centroid(tm.point(tm.source(tm.halfedge(f))), tm.point(tm.target(tm.halfedge(f))),
+                                  tm.point(tm.target(tm.next(tm.halfedge(f)))));
+    std::int64_t cell = 0;
+    for(int i = 0; i < 3; ++i)
+      cell += std::int64_t(3 * (c[i] - box.min(i)) / (box.max(i) - box.min(i) + 1e-9));
+    material[f] = cell % 2;
+    used.insert(material[f]);
+  }
+  ASSERT_EQ(used.size(), 2u);
+  const Atlas a = atlas_with_groups(tm, polygon, material, 2u);
+  expect_valid_atlas(tm, a);
+  std::map<std::size_t, std::set<std::int64_t> > materials_of_chart;
+  for(Mesh::Face_index f : tm.faces())
+    materials_of_chart[a.patch[f]].insert(material[f]);
+  std::size_t spanning = 0;
+  for(const auto& chart : materials_of_chart)
+    spanning += chart.second.size() > 1 ? 1 : 0;
+  EXPECT_EQ(spanning, 0u);
+  EXPECT_EQ(a.report.polygons_moved_whole + a.report.polygons_left_across_charts, 0u);
+}
+
+TEST(Atlas, PolygonsSplitByChartsAreMovedWholeIntoOne)
+{
+  // A torus of quads, each two triangles (faces 2q and 2q + 1).
+  const TS::Soup soup = TS::torus(32, 12);
+  std::size_t cut[2] = { 0, 0 };
+  DS::Atlas_report reports[2];
+  for(int keep = 0; keep < 2; ++keep)
+  {
+    Mesh tm = make(soup);
+    Face_value_map polygon = tm.add_property_map<Mesh::Face_index, std::int64_t>("f:polygon", 0).first;
+    Face_value_map material = tm.add_property_map<Mesh::Face_index, std::int64_t>("f:material", 0).first;
+    for(Mesh::Face_index f : tm.faces())
+      polygon[f] = keep ? std::int64_t(f) / 2 : std::int64_t(f);
+    const Atlas a = atlas_with_groups(tm, polygon, material, 2u);
+    expect_valid_atlas(tm, a);
+    reports[keep] = a.report;
+    std::map<std::int64_t, std::set<std::size_t> > charts_of_quad;
+    for(Mesh::Face_index f : tm.faces())
+      charts_of_quad[std::int64_t(f) / 2].insert(a.patch[f]);
+    for(const auto& quad : charts_of_quad)
+      cut[keep] += quad.second.size() > 1 ? 1 : 0;
+  }
+  EXPECT_GT(cut[0], 0u) << "no quad is cut without polygons: the test is void";
+  EXPECT_GT(reports[1].polygons_moved_whole, 0u);
+  EXPECT_EQ(cut[1], reports[1].polygons_left_across_charts);
+  EXPECT_LT(cut[1], cut[0]);
+  EXPECT_EQ(reports[0].polygons_moved_whole, 0u);
+}
+
+TEST(Atlas, SeveralMeshesKeepTheirOwnChartsInOneValidAtlas)
+{
+  const char* names[] = { "elephant.off", "knot1.off", "eight.off" };
+  std::vector<Mesh> meshes;
+  for(const char* name : names)
+    meshes.push_back(load(name));
+  std::vector<const Mesh*> pointers;
+  std::vector<UV_map> uvs;
+  std::vector<Patch_map> patches;
+  for(Mesh& m : meshes)
+  {
+    pointers.push_back(&m);
+    uvs.push_back(m.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:multi_uv", K::Point_2(7, 7)).first);
+    patches.push_back(m.add_property_map<Mesh::Face_index, std::size_t>("f:multi_patch", 7).first);
+  }
+
+  // Mismatched maps: refused, nothing written.
+  std::vector<UV_map> too_few(uvs.begin(), uvs.end() - 1);
+  EXPECT_THROW(DS::uv_atlas_of_meshes(pointers, too_few, patches), DS::Input_error);
+  EXPECT_EQ(patches[0][*meshes[0].faces().begin()], 7u);
+
+  const DS::Multi_mesh_atlas_report report = DS::uv_atlas_of_meshes(pointers, uvs, patches);
+  ASSERT_EQ(report.meshes.size(), 3u);
+  ASSERT_EQ(report.first_chart.size(), 4u);
+
+  // Each mesh's charts are those it gets alone, numbered after the charts of the meshes before it.
+  for(std::size_t i = 0; i < meshes.size(); ++i)
+  {
+    SCOPED_TRACE(names[i]);
+    Mesh alone_mesh = load(names[i]);
+    const Atlas alone = make_atlas(alone_mesh, DS::parameters::default_values());
+    EXPECT_EQ(report.first_chart[i + 1] - report.first_chart[i], alone.report.number_of_charts);
+    std::size_t different = 0;
+    for(Mesh::Face_index f : meshes[i].faces())
+      different += patches[i][f] != report.first_chart[i] + alone.patch[f] ? 1 : 0;
+    EXPECT_EQ(different, 0u);
+  }
+
+  // One atlas: the meshes side by side in one mesh, checked as a whole (no overlap across meshes).
+  Mesh all;
+  Patch_map all_patch = all.add_property_map<Mesh::Face_index, std::size_t>("f:all_patch", 0).first;
+  UV_map all_uv = all.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:all_uv").first;
+  for(std::size_t i = 0; i < meshes.size(); ++i)
+  {
+    std::vector<std::pair<Mesh::Halfedge_index, Mesh::Halfedge_index> > halfedges;
+    std::vector<std::pair<Mesh::Face_index, Mesh::Face_index> > faces;
+    CGAL::copy_face_graph(meshes[i], all,
+                          CGAL::parameters::halfedge_to_halfedge_output_iterator(std::back_inserter(halfedges))
+                            .face_to_face_output_iterator(std::back_inserter(faces)));
+    for(const auto& f : faces)
+      all_patch[f.second] = patches[i][f.first];
+    for(const auto& h : halfedges)
+      if(!meshes[i].is_border(h.first))
+        all_uv[h.second] = uvs[i][h.first];
+  }
+  const TS::Partition_report partition = TS::check_disk_partition(all, all_patch);
+  EXPECT_TRUE(partition.ok) << partition.problem;
+  EXPECT_EQ(partition.number_of_patches, report.first_chart.back());
+  const TS::Atlas_report atlas = TS::check_atlas(all, all_patch, all_uv, 1024);
+  EXPECT_TRUE(atlas.ok()) << atlas.summary();
 }
 
 TEST(Atlas, TheBoundParametersOverrideTheBoundAndAreChecked)
@@ -1290,8 +1477,12 @@ TEST(Atlas, ObjWrittenByTheToolReadsBackWithTheSameFacesAndUVs)
   const Atlas a = make_atlas(tm, DS::parameters::default_values());
   ASSERT_EQ(data.face_v.size(), tm.number_of_faces());
   ASSERT_EQ(data.v.size(), tm.number_of_vertices());
+  // The OBJ lists the faces chart by chart, in mesh order within a chart.
+  std::vector<Mesh::Face_index> obj_order(tm.faces().begin(), tm.faces().end());
+  std::stable_sort(obj_order.begin(), obj_order.end(),
+                   [&a](Mesh::Face_index f, Mesh::Face_index g) { return a.patch[f] < a.patch[g]; });
   std::size_t f_index = 0, mismatches = 0, wrong_groups = 0;
-  for(Mesh::Face_index f : tm.faces())
+  for(Mesh::Face_index f : obj_order)
   {
     for(Mesh::Halfedge_index h : CGAL::halfedges_around_face(tm.halfedge(f), tm))
     {
@@ -1311,6 +1502,10 @@ TEST(Atlas, ObjWrittenByTheToolReadsBackWithTheSameFacesAndUVs)
   }
   EXPECT_EQ(mismatches, 0u);
   EXPECT_EQ(wrong_groups, 0u) << "faces must be grouped by chart";
+  std::size_t group_changes = 0;
+  for(std::size_t i = 1; i < data.face_group.size(); ++i)
+    group_changes += data.face_group[i] != data.face_group[i - 1] ? 1 : 0;
+  EXPECT_EQ(group_changes + 1, a.report.number_of_charts) << "one run of faces per chart";
   std::remove(obj.c_str());
 #endif
 }

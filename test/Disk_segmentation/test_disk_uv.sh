@@ -94,7 +94,74 @@ expect_error 2 "" "$data/elephant.off" --no-such-option
 [ $? -eq 1 ] && grep -qiE "non-finite|not a valid" "$work/err.txt" && pass || fail "NaN input: $(cat "$work/err.txt")"
 
 expect_error 1 "--max-chart-faces must be" "$data/elephant.off" --max-chart-faces 0
+expect_error 2 "--max-charts: '-1' is not a non-negative" "$data/elephant.off" --max-charts -1
+# A chart budget: met (as many charts as asked) or, when no merge is left, a
+# warning; the report says which.
+"$tool" "$data/elephant.off" --max-charts 30 --report "$work/budget.json" > "$work/out.txt" 2> "$work/err.txt"
+python3 -c "import json,sys; r=json.load(open('$work/budget.json')); p=r['parameterization']
+sys.exit(0 if r['segmentation']['charts'] == 30 and p['chart_budget_met'] and p['charts_before_budget'] > 30 else 1)" \
+  && [ ! -s "$work/err.txt" ] && pass || fail "--max-charts 30: $(cat "$work/err.txt")"
+"$tool" "$data/elephant.off" --max-charts 1 --report "$work/budget.json" > "$work/out.txt" 2> "$work/err.txt"
+grep -q "warning: .* over --max-charts (1)" "$work/err.txt" && grep -q '"chart_budget_met": false' "$work/budget.json" \
+  && pass || fail "an unmet --max-charts is not said: $(cat "$work/err.txt")"
 expect_error 1 "vertex #1 has a non-finite" "$work/overflow.off"
+# Materials: one id per face; no chart holds two.
+python3 -c "
+n = int(open('$data/elephant.off').read().split()[2])
+open('$work/materials.txt', 'w').write(''.join('%d\\n' % (3 * f // n) for f in range(n)))"
+"$tool" "$data/elephant.off" --material-ids "$work/materials.txt" --patch-ids "$work/m_ids.txt" > /dev/null 2>&1
+python3 -c "
+import sys
+materials = [int(x) for x in open('$work/materials.txt')]
+charts = [int(x) for x in open('$work/m_ids.txt')]
+seen = {}
+for c, m in zip(charts, materials): seen.setdefault(c, set()).add(m)
+sys.exit(0 if len(materials) == len(charts) and all(len(s) == 1 for s in seen.values()) else 1)" \
+  && pass || fail "a chart holds two materials"
+head -n 10 "$work/materials.txt" > "$work/few.txt"
+expect_error 1 "--material-ids: .* has 10 ids for 5558 faces" "$data/elephant.off" --material-ids "$work/few.txt"
+printf '0\n1\nx2\n' > "$work/bad_ids.txt"
+expect_error 1 "--material-ids: .* line 3: 'x2' is not an integer" "$data/elephant.off" --material-ids "$work/bad_ids.txt"
+expect_error 1 "--material-ids: .*cannot open" "$data/elephant.off" --material-ids "$work/no_such_ids.txt"
+# Several inputs, one atlas: each mesh keeps the charts it gets alone.
+"$tool" "$data/elephant.off" --patch-ids "$work/alone_a.txt" > /dev/null 2>&1
+"$tool" "$data/eight.off" --patch-ids "$work/alone_b.txt" > /dev/null 2>&1
+"$tool" "$data/elephant.off" "$data/eight.off" --patch-ids "$work/both.txt" --report "$work/both.json" \
+  -o "$work/both.obj" > /dev/null 2>&1
+python3 -c "
+import json, sys
+a = [int(x) for x in open('$work/alone_a.txt')]
+b = [int(x) for x in open('$work/alone_b.txt')]
+both = [int(x) for x in open('$work/both.txt')]
+r = json.load(open('$work/both.json'))
+first = r['inputs'][1]['first_chart']
+ok = both == a + [first + x for x in b] and first == max(a) + 1 and r['charts'] == first + max(b) + 1
+ok = ok and len(r['inputs']) == 2 and sum(l.startswith('f ') for l in open('$work/both.obj')) == len(both)
+sys.exit(0 if ok else 1)" && pass || fail "two inputs: not the charts each gets alone, in one atlas"
+expect_error 1 "cannot open .*no_such.off" "$data/elephant.off" "$work/no_such.off"
+expect_error 1 "--material-ids takes one INPUT, not 2" "$data/elephant.off" "$data/eight.off" \
+  --material-ids "$work/materials.txt"
+# Polygons: with --triangulate, a quad split between charts is moved whole.
+python3 -c "
+import math
+n, m = 40, 12
+lines = ['OFF', '%d %d 0' % (n * m, n * m)]
+for a in range(n):
+    for b in range(m):
+        u, v = 2 * math.pi * a / n, 2 * math.pi * b / m
+        lines.append('%f %f %f' % ((2 + .7 * math.cos(v)) * math.cos(u), (2 + .7 * math.cos(v)) * math.sin(u), .7 * math.sin(v)))
+for a in range(n):
+    for b in range(m):
+        lines.append('4 %d %d %d %d' % (a * m + b, (a + 1) % n * m + b, (a + 1) % n * m + (b + 1) % m, a * m + (b + 1) % m))
+open('$work/quad_torus.off', 'w').write('\\n'.join(lines) + '\\n')"
+"$tool" "$work/quad_torus.off" --triangulate --patch-ids "$work/q_ids.txt" --report "$work/q.json" > /dev/null 2>&1
+python3 -c "
+import json, sys
+charts = [int(x) for x in open('$work/q_ids.txt')]
+polygons = json.load(open('$work/q.json'))['polygons']
+cut = sum(charts[2 * q] != charts[2 * q + 1] for q in range(len(charts) // 2))
+sys.exit(0 if polygons['moved_whole_into_one_chart'] > 0 and cut == polygons['left_across_charts'] else 1)" \
+  && pass || fail "--triangulate: polygons not kept whole: $(cat "$work/q.json" | grep -A3 polygons)"
 # Inputs that broke CGAL's own readers (see fuzz/regressions/README.md).
 cp "$data/../fuzz/regressions/ply_property_before_element" "$work/prop.ply"
 expect_error 1 "property comes before any element" "$work/prop.ply"

@@ -105,6 +105,12 @@ struct Parameterization_report
   /// Charts where the requested method itself failed (see `Chart_report::method_error`),
   /// whether or not a fallback then repaired them.
   std::size_t number_of_method_errors = 0;
+  /// With `max_number_of_charts`: how many charts there were under the distortion bound before
+  /// merges brought them down to the budget (0 when they were within it).
+  std::size_t charts_before_budget = 0;
+  /// `false` when the charts are more than `max_number_of_charts`: no two adjacent charts have a
+  /// union that is a disk with a valid map (and at most `max_chart_faces` faces).
+  bool chart_budget_met = true;
 };
 
 /// \ingroup PkgDiskSegmentationRef
@@ -136,6 +142,7 @@ struct Parameterization_settings
   unsigned int threads;
   Distortion_bound bound;
   std::size_t max_chart_faces;
+  std::size_t max_charts;  // no_chart_budget without a budget
   bool smooth_borders, merge_charts, straighten_borders;
 };
 
@@ -183,6 +190,11 @@ Parameterization_settings parameterization_settings(const NamedParameters& np)
     "max_chart_faces");
   if(s.max_chart_faces < 1)
     throw Input_error("max_chart_faces must be >= 1");
+  s.max_charts = count_parameter(
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::max_number_of_charts), no_chart_budget),
+    "max_number_of_charts");
+  if(s.max_charts < 1)
+    throw Input_error("max_number_of_charts must be >= 1");
   return s;
 }
 
@@ -844,13 +856,15 @@ struct Indexed_input
   }
 };
 
-// parameterize_patches() on `tm` already indexed (`input`), with the merge
-// tree given apart, so that uv_atlas() can pass its own whatever the type
-// of `np`.
-template <typename TriangleMesh, typename FacePatchMap, typename UVMap, typename NamedParameters>
+// parameterize_patches() on `tm` already indexed (`input`), with its
+// parameters read (`settings`, `progress`) and the merge tree given apart,
+// so that uv_atlas() can pass its own whatever the type of its parameters,
+// and run it again with other settings without another instantiation.
+template <typename TriangleMesh, typename FacePatchMap, typename UVMap>
 Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, const Indexed_input<TriangleMesh>& input,
                                                      FacePatchMap face_patch_map, UVMap uv_map,
-                                                     const NamedParameters& np, const Merge_tree* tree)
+                                                     const Parameterization_settings& settings,
+                                                     internal::Progress& progress, const Merge_tree* tree)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -859,7 +873,6 @@ Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, con
   typedef typename boost::property_traits<UVMap>::value_type UV;
   using internal::Index;
 
-  const internal::Parameterization_settings settings = internal::parameterization_settings(np);
   const Parameterization_method method = settings.method;
   const bool use_fallback = settings.use_fallback;
   const unsigned int threads = settings.threads;
@@ -912,7 +925,6 @@ Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, con
                                           settings.smooth_borders ? &smoother : nullptr, curvature.get(),
                                           m.total_common_area() };
   internal::Per_thread_splitter splitter(m);
-  internal::Progress progress = internal::Progress::from(np);
   const internal::Arap_early_look early_look = needs_split.early_look();
 
   // Why the requested method's chart of each patch as a whole was rejected.
@@ -989,6 +1001,15 @@ Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, con
     internal::merge_kept_charts(m, topology, kept, needs_split, method, use_fallback, for_each, rejected_regions);
   if(bounded && settings.straighten_borders)
     internal::reroute_kept_charts(m, topology, kept, needs_split, method, use_fallback, for_each);
+  Parameterization_report report;
+  if(kept.size() > settings.max_charts)
+  {
+    // The budget wins over the bound, never over validity or max_chart_faces.
+    report.charts_before_budget = kept.size();
+    internal::merge_kept_charts(m, topology, kept, needs_split, method, use_fallback, for_each, rejected_regions,
+                                settings.max_charts);
+    report.chart_budget_met = kept.size() <= settings.max_charts;
+  }
   progress("parameterization", number_of_patches, number_of_patches);
 
   // Each patch's charts in tree order; the first keeps the patch's id if
@@ -998,7 +1019,6 @@ Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, con
   std::sort(kept.begin(), kept.end(), [](const internal::Kept_chart& a, const internal::Kept_chart& b) {
     return a.patch != b.patch ? a.patch < b.patch : a.path < b.path;
   });
-  Parameterization_report report;
   const std::size_t number_of_charts = kept.size();
   std::vector<internal::Chart> charts(number_of_charts);
   std::vector<internal::Chart_outcome> outcomes(number_of_charts);
@@ -1124,6 +1144,19 @@ Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, con
 /// `max_chart_faces` faces are split the same way before they are
 /// parameterized, with or without the fallback.
 ///
+/// A chart budget (`max_number_of_charts`, UVAtlas's maxChartNumber; not in
+/// the paper) is applied last: when the charts chosen above are more than
+/// the budget, adjacent charts whose union is a disk are merged, and a
+/// union is kept when its map is valid, whatever its distortion, until the
+/// budget is met. Pairs are solved in the order of the growth of the
+/// area-weighted sum of excesses over the bound that their own excesses
+/// predict; of each round's solved unions, those whose measured growth is
+/// least are kept. So validity and `max_chart_faces`
+/// win over the budget, and the budget wins over the distortion bound; the
+/// report says when the budget could not be met (`chart_budget_met`) and
+/// how many charts the bound alone gave. Without a budget, or when the
+/// bound gives no more charts than the budget, nothing changes.
+///
 /// UVs are per corner: `uv_map[h]` is the UV of `target(h)` as seen from
 /// `face(h)`, so charts are cut along patch borders. Charts are not placed
 /// relative to each other: see `pack_patches()`.
@@ -1202,6 +1235,12 @@ Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, con
 ///     \cgalParamType{`std::size_t`, at least 1}
 ///     \cgalParamDefault{`default_max_chart_faces` (\f$ 2^{17} = 131072 \f$)}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{max_number_of_charts}
+///     \cgalParamDescription{the chart budget: charts over it are merged past the distortion bound
+///       (see above)}
+///     \cgalParamType{`std::size_t`, at least 1}
+///     \cgalParamDefault{no budget}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{require_disk_patches}
 ///     \cgalParamDescription{when `false`, patches that are not topological disks are parameterized
 ///       anyway, as a segmentation that ignores topology would be (for comparisons): they usually
@@ -1269,8 +1308,10 @@ Parameterization_report parameterize_patches(const TriangleMesh& tm,
   Merge_tree tree;
   if(given != nullptr)
     tree = internal::face_leaves_to_mesh_order(input.mesh, *given);
+  internal::Progress progress = internal::Progress::from(np);
   return internal::parameterize_indexed_patches(tm, input, internal::checked_patch_map<TriangleMesh>(face_patch_map),
-                                                internal::checked_uv_map<TriangleMesh>(uv_map), np,
+                                                internal::checked_uv_map<TriangleMesh>(uv_map),
+                                                internal::parameterization_settings(np), progress,
                                                 given != nullptr ? &tree : nullptr);
 }
 

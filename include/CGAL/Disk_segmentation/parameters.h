@@ -39,6 +39,7 @@ enum progress_callback_t { progress_callback };
 enum require_disk_patches_t { require_disk_patches };
 enum max_area_distortion_t { max_area_distortion };
 enum max_chart_faces_t { max_chart_faces };
+enum max_number_of_charts_t { max_number_of_charts };
 enum max_angle_distortion_t { max_angle_distortion };
 enum max_stretch_t { max_stretch };
 enum max_area_scale_t { max_area_scale };
@@ -49,6 +50,8 @@ enum distortion_bound_t { distortion_bound };
 enum smooth_borders_t { smooth_borders };
 enum merge_charts_t { merge_charts };
 enum straighten_borders_t { straighten_borders };
+enum face_material_map_t { face_material_map };
+enum face_polygon_map_t { face_polygon_map };
 
 } // namespace internal_np
 
@@ -101,6 +104,7 @@ struct Named_function_parameters
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(require_disk_patches_t, require_disk_patches)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(max_area_distortion_t, max_area_distortion)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(max_chart_faces_t, max_chart_faces)
+  CGAL_DISK_SEGMENTATION_ADD_PARAMETER(max_number_of_charts_t, max_number_of_charts)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(max_angle_distortion_t, max_angle_distortion)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(max_stretch_t, max_stretch)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(max_area_scale_t, max_area_scale)
@@ -111,6 +115,8 @@ struct Named_function_parameters
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(smooth_borders_t, smooth_borders)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(merge_charts_t, merge_charts)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(straighten_borders_t, straighten_borders)
+  CGAL_DISK_SEGMENTATION_ADD_PARAMETER(face_material_map_t, face_material_map)
+  CGAL_DISK_SEGMENTATION_ADD_PARAMETER(face_polygon_map_t, face_polygon_map)
 #undef CGAL_DISK_SEGMENTATION_ADD_PARAMETER
 };
 
@@ -224,6 +230,18 @@ CGAL_DISK_SEGMENTATION_ADD_PARAMETER(merge_tree_t, merge_tree)
 /// \ingroup PkgDiskSegmentationRef
 /// Patches with more faces than this are split before they are parameterized (`std::size_t`).
 CGAL_DISK_SEGMENTATION_ADD_PARAMETER(max_chart_faces_t, max_chart_faces)
+/// \ingroup PkgDiskSegmentationRef
+/// The most charts the atlas may have: charts chosen under the distortion bound are merged past it
+/// until there are no more (`std::size_t`; see `parameterize_patches()`).
+CGAL_DISK_SEGMENTATION_ADD_PARAMETER(max_number_of_charts_t, max_number_of_charts)
+/// \ingroup PkgDiskSegmentationRef
+/// Faces with different values (materials, parts) never share a chart or a patch: the mesh is
+/// cut along the edges between them (`ReadablePropertyMap` from faces to an equality-comparable value).
+CGAL_DISK_SEGMENTATION_ADD_PARAMETER(face_material_map_t, face_material_map)
+/// \ingroup PkgDiskSegmentationRef
+/// Faces with the same value are one polygon of the caller's mesh (triangulated), kept whole in
+/// one chart where both charts stay disks (`ReadablePropertyMap` from faces to an integral id; see `uv_atlas()`).
+CGAL_DISK_SEGMENTATION_ADD_PARAMETER(face_polygon_map_t, face_polygon_map)
 /// \endcond
 #undef CGAL_DISK_SEGMENTATION_ADD_PARAMETER
 

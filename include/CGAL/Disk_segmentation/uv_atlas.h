@@ -9,6 +9,7 @@
 #include <CGAL/Disk_segmentation/pack_patches.h>
 #include <CGAL/Disk_segmentation/parameterize_patches.h>
 #include <CGAL/Disk_segmentation/segment_into_disks.h>
+#include <CGAL/Disk_segmentation/internal/Face_group_moves.h>
 #include <CGAL/Disk_segmentation/internal/Parameter_checks.h>
 #include <CGAL/Disk_segmentation/internal/Progress.h>
 
@@ -38,6 +39,9 @@ struct Atlas_report
   Parameterization_report parameterization;
   /// Packing efficiency and texel density.
   Packing_report packing;
+  /// With `face_polygon_map`: polygons split by the charts and moved whole into one of them,
+  /// and those left across charts (a move would have left a chart that is not a disk).
+  std::size_t polygons_moved_whole = 0, polygons_left_across_charts = 0;
 
   double voronoi_seconds = 0, refine_seconds = 0, merge_seconds = 0;
   double parameterization_seconds = 0, packing_seconds = 0, total_seconds = 0;
@@ -69,6 +73,82 @@ void check_uv_atlas_parameters(const NamedParameters& np = parameters::default_v
   internal::parameterization_settings(np);
   internal::packing_settings(np);
 }
+
+namespace internal {
+
+// uv_atlas() up to the packing: the patches of `tm` in `face_patch_map`,
+// their charts' UVs in `uv_map` (not yet packed), the merge tree and the
+// seeds. Shared with uv_atlas_of_meshes().
+template <typename TriangleMesh, typename FacePatchMap, typename UVMap, typename NamedParameters>
+Atlas_report segment_and_parameterize(const TriangleMesh& tm, FacePatchMap face_patch_map, UVMap uv_map,
+                                      const NamedParameters& np, Progress& progress, Merge_tree& tree,
+                                      std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& seeds)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::is_default_parameter;
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  Atlas_report report;
+  CGAL::Real_timer timer;
+  {
+    // One indexed mesh for the segmentation and the parameterization.
+    const Indexed_input<TriangleMesh> input(tm, np);
+    {
+      std::vector<Index> labels;
+      const Segmentation_steps steps = segment_indexed(
+        input.mesh, input.face_handles, np, labels, &tree,
+        choose_parameter(get_parameter(np, Disk_segmentation::internal_np::smooth_borders), true), progress);
+      // Charts only split from here: too many patches for the padding can
+      // be told before the parameterization.
+      check_packing_capacity(packing_settings(np), steps.patches);
+      write_face_labels(input.face_handles, labels, face_patch_map);
+      for(Index s : steps.seeds)
+        seeds.push_back(input.face_handles[s]);
+      report.number_of_faces = input.mesh.number_of_faces();
+      report.number_of_voronoi_cells = steps.voronoi_cells;
+      report.number_of_refined_regions = steps.refined_regions;
+      report.voronoi_seconds = steps.voronoi_seconds;
+      report.refine_seconds = steps.refine_seconds;
+      report.merge_seconds = steps.merge_seconds;
+    }
+
+    timer.start();
+    const Parameterization_settings settings = parameterization_settings(np);
+    report.parameterization =
+      parameterize_indexed_patches(tm, input, face_patch_map, uv_map, settings, progress, &tree);
+    if constexpr(!is_default_parameter<NamedParameters, Disk_segmentation::internal_np::face_polygon_map_t>::value)
+    {
+      const auto polygon_map = checked_face_group_map<TriangleMesh>(
+        get_parameter(np, Disk_segmentation::internal_np::face_polygon_map));
+      typedef typename boost::property_traits<std::decay_t<decltype(polygon_map)> >::value_type Polygon_id;
+      std::vector<Polygon_id> polygon_of;
+      polygon_of.reserve(input.face_handles.size());
+      for(face_descriptor f : input.face_handles)
+        polygon_of.push_back(get(polygon_map, f));
+      const std::vector<std::size_t> ids = read_face_labels(input.face_handles, face_patch_map);
+      std::vector<Index> labels(ids.begin(), ids.end());
+      const Face_group_moves moves = keep_polygons_whole(input.mesh, polygon_of, labels);
+      report.polygons_moved_whole = moves.moved;
+      report.polygons_left_across_charts = moves.left;
+      if(moves.moved > 0)
+      {
+        // The charts are parameterized again, each whole, without the bound:
+        // a split would cut polygons again.
+        write_face_labels(input.face_handles, labels, face_patch_map);
+        Parameterization_settings unbounded = settings;
+        unbounded.bound = Distortion_bound::unbounded();
+        report.parameterization =
+          parameterize_indexed_patches(tm, input, face_patch_map, uv_map, unbounded, progress, nullptr);
+      }
+    }
+    face_leaves_to_input_order(input.mesh, tree);
+    report.number_of_charts = report.parameterization.charts.size();
+    report.parameterization_seconds = timer.time();
+  }
+  return report;
+}
+
+} // namespace internal
 
 /// \ingroup PkgDiskSegmentationRef
 ///
@@ -110,6 +190,23 @@ void check_uv_atlas_parameters(const NamedParameters& np = parameters::default_v
 ///       chosen top-down (see `parameterize_patches()`)}
 ///     \cgalParamType{`Merge_tree*`}
 ///     \cgalParamDefault{an internal tree}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_material_map}
+///     \cgalParamDescription{faces with different values (materials, parts) never share a chart: the
+///       mesh is cut along the edges between them before anything else (not in the paper)}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `face_descriptor` as key type and an
+///       equality-comparable value type}
+///     \cgalParamDefault{one material}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_polygon_map}
+///     \cgalParamDescription{faces with the same value are one polygon of the caller's mesh
+///       (triangulated): a polygon that the charts split is moved whole into one of them where both
+///       charts stay disks; the charts are then parameterized again, each whole, without the
+///       distortion bound (a split would cut polygons again), and `Atlas_report::polygons_moved_whole` and
+///       `polygons_left_across_charts` count them (not in the paper)}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `face_descriptor` as key type and an
+///       integral value type}
+///     \cgalParamDefault{each face its own polygon}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{progress_callback}
 ///     \cgalParamDescription{called with the stage (`"segmentation"`, `"parameterization"`, `"packing"`)
@@ -156,7 +253,6 @@ Atlas_report uv_atlas(const TriangleMesh& tm, UVMap uv_map, const NamedParameter
   typedef typename boost::property_traits<std::decay_t<decltype(user_uv_map)> >::value_type UV_point;
   typedef typename boost::property_map<TriangleMesh, CGAL::dynamic_halfedge_property_t<UV_point> >::const_type
     Staged_uv_map;
-  const internal::Packing_settings packing = internal::packing_settings(np);
 
   // The stages write to maps of their own: the caller's maps, merge tree and
   // seeds are written at the end, once nothing can throw (a bad mesh, a
@@ -166,45 +262,16 @@ Atlas_report uv_atlas(const TriangleMesh& tm, UVMap uv_map, const NamedParameter
   const auto user_patch_map = internal::checked_patch_map<TriangleMesh>(
     choose_parameter(get_parameter(np, CGAL::internal_np::face_patch), face_patch_map));
   static_assert(internal::Check_patch_map<std::decay_t<decltype(user_patch_map)> >::value, "");
-  Atlas_report report;
   internal::Progress progress = internal::Progress::from(np);
   Merge_tree tree;
   std::vector<face_descriptor> seeds;
   const Staged_uv_map staged_uv = get(CGAL::dynamic_halfedge_property_t<UV_point>(), tm);
-
-  CGAL::Real_timer timer;
-  {
-    // One indexed mesh for the segmentation and the parameterization.
-    const internal::Indexed_input<TriangleMesh> input(tm, np);
-    {
-      std::vector<internal::Index> labels;
-      const internal::Segmentation_steps steps = internal::segment_indexed(
-        input.mesh, input.face_handles, np, labels, &tree,
-        choose_parameter(get_parameter(np, Disk_segmentation::internal_np::smooth_borders), true), progress);
-      // Charts only split from here: too many patches for the padding can
-      // be told before the parameterization.
-      internal::check_packing_capacity(packing, steps.patches);
-      internal::write_face_labels(input.face_handles, labels, face_patch_map);
-      for(internal::Index s : steps.seeds)
-        seeds.push_back(input.face_handles[s]);
-      report.number_of_faces = input.mesh.number_of_faces();
-      report.number_of_voronoi_cells = steps.voronoi_cells;
-      report.number_of_refined_regions = steps.refined_regions;
-      report.voronoi_seconds = steps.voronoi_seconds;
-      report.refine_seconds = steps.refine_seconds;
-      report.merge_seconds = steps.merge_seconds;
-    }
-
-    timer.start();
-    report.parameterization = internal::parameterize_indexed_patches(tm, input, face_patch_map, staged_uv, np, &tree);
-    internal::face_leaves_to_input_order(input.mesh, tree);
-    report.number_of_charts = report.parameterization.charts.size();
-    report.parameterization_seconds = timer.time();
-  }
+  Atlas_report report = internal::segment_and_parameterize(tm, face_patch_map, staged_uv, np, progress, tree, seeds);
 
   // The indexed mesh is freed: the packing reads the mesh again.
   progress("packing", 0, 1);
-  timer.reset();
+  CGAL::Real_timer timer;
+  timer.start();
   report.packing = internal::pack_checked_patches(tm, face_patch_map, staged_uv, np);
   report.packing_seconds = timer.time();
   progress("packing", 1, 1);

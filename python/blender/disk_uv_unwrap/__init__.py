@@ -99,6 +99,11 @@ class UV_OT_disk_uv_unwrap(bpy.types.Operator):
         default=0.06, min=0.001, soft_max=1.0)
     unbounded: BoolProperty(
         name="No distortion bound", description="The paper's charts: fewer, more distorted", default=False)
+    split_by_material: BoolProperty(
+        name="Split by material", description="No chart spans two materials of the object", default=True)
+    max_charts: IntProperty(
+        name="Chart budget", description="Most charts per object, merged past the bound if needed (0: no budget)",
+        default=0, min=0, soft_max=1000)
     margin: FloatProperty(name="Margin (texels)", description="Gap around every chart, in texels",
                           default=2.0, min=0.0, soft_max=16.0)
     resolution: IntProperty(name="Resolution", description="Texture side in texels the margin refers to",
@@ -133,11 +138,17 @@ class UV_OT_disk_uv_unwrap(bpy.types.Operator):
                 if len(triangles) == 0:
                     failed.append("%s: no %sfaces" % (obj.name, "selected " if mode == "EDIT_MESH" else ""))
                     continue
+                materials = None
+                if self.split_by_material and len(obj.data.materials) > 1:
+                    material_of_polygon = numpy.empty(len(obj.data.polygons), dtype=numpy.int64)
+                    obj.data.polygons.foreach_get("material_index", material_of_polygon)
+                    materials = material_of_polygon[polygons]
                 try:
                     atlas = disk_uv.atlas(vertices, triangles, method=self.method, unbounded=self.unbounded,
                                           max_angle_distortion=self.max_angle_distortion,
                                           padding=self.margin, resolution=self.resolution,
-                                          face_groups=polygons)
+                                          max_charts=self.max_charts or None, face_groups=polygons,
+                                          materials=materials)
                 except ValueError as error:
                     failed.append("%s: %s" % (obj.name, error))
                     continue

@@ -7,12 +7,15 @@
 #include <CGAL/Disk_segmentation/IO/internal/Atlas_corners.h>
 #include <CGAL/Disk_segmentation/internal/Parameter_checks.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <ios>
 #include <limits>
 #include <locale>
+#include <numeric>
 #include <ostream>
+#include <vector>
 
 namespace CGAL {
 namespace Disk_segmentation {
@@ -23,9 +26,10 @@ namespace IO {
 /// Writes the per-corner UV atlas of `mesh` as a Wavefront OBJ file: one
 /// `v` line per vertex in the order of `vertices(mesh)`, one `vt` line per
 /// texture vertex (a vertex seen from one chart: a vertex on a seam has one
-/// per chart around it), the faces as `f v/vt ...` in the order of
-/// `faces(mesh)`, and a line `g chart_<id>` wherever the chart changes
-/// between consecutive faces. Numbers are written with
+/// per chart around it), and the faces as `f v/vt ...` grouped by chart:
+/// one line `g chart_<id>` per chart, in increasing id, followed by the
+/// chart's faces in the order of `faces(mesh)` (so that an importer that
+/// splits by group makes one object per chart). Numbers are written with
 /// `std::numeric_limits<double>::max_digits10` digits in the classic locale,
 /// so they read back exactly; the stream's formatting is restored. No
 /// dependency beyond \cgal.
@@ -44,7 +48,7 @@ namespace IO {
 ///
 /// @return whether the stream is still good after writing
 ///
-/// Complexity: \f$ O(C) \f$ expected time and memory for `C` corners.
+/// Complexity: \f$ O(C + F \log F) \f$ expected time and \f$ O(C) \f$ memory for `C` corners and `F` faces.
 template <typename TriangleMesh, typename FacePatchMap, typename UVMap>
 bool write_atlas_OBJ(std::ostream& out, const TriangleMesh& mesh, FacePatchMap patch, UVMap uv)
 {
@@ -61,9 +65,14 @@ bool write_atlas_OBJ(std::ostream& out, const TriangleMesh& mesh, FacePatchMap p
     out << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
   for(const internal::Texture_vertex& t : a.textures)
     out << "vt " << t.u << ' ' << t.v << '\n';
-  for(std::size_t f = 0; f < a.number_of_faces(); ++f)
+  std::vector<std::size_t> order(a.number_of_faces());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::stable_sort(order.begin(), order.end(),
+                   [&a](std::size_t f, std::size_t g) { return a.face_chart[f] < a.face_chart[g]; });
+  for(std::size_t i = 0; i < order.size(); ++i)
   {
-    if(f == 0 || a.face_chart[f] != a.face_chart[f - 1])
+    const std::size_t f = order[i];
+    if(i == 0 || a.face_chart[f] != a.face_chart[order[i - 1]])
       out << "g chart_" << a.face_chart[f] << '\n';
     out << 'f';
     for(std::size_t c = a.face_begin[f]; c < a.face_begin[f + 1]; ++c)

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdint>
 #include <iterator>
+#include <limits>
 #include <map>
 #include <set>
 #include <tuple>
@@ -74,11 +75,50 @@ inline std::uint64_t region_key(const std::vector<Index>& sorted_faces)
   return key;
 }
 
+// Over a chart budget, of the valid unions of a round, keeps the `wanted`
+// ones that add least to the area-weighted sum of excesses; the others are
+// forgotten as tried, since they failed on rank only.
+template <typename Tried>
+void keep_least_excess_growth(const std::vector<std::pair<std::size_t, std::size_t> >& round,
+                              const std::vector<double>& union_excess, const std::vector<double>& area,
+                              const std::vector<double>& excess, std::size_t wanted, std::vector<char>& accepted,
+                              std::set<Tried>& tried, const std::vector<std::size_t>& version)
+{
+  std::vector<std::pair<double, std::size_t> > growth;  // growth, index in the round
+  for(std::size_t i = 0; i < round.size(); ++i)
+    if(accepted[i])
+    {
+      const std::size_t a = round[i].first, b = round[i].second;
+      const double g = union_excess[i] * (area[a] + area[b]) - excess[a] * area[a] - excess[b] * area[b];
+      growth.emplace_back(std::isfinite(g) ? g : std::numeric_limits<double>::max(), i);
+    }
+  std::sort(growth.begin(), growth.end());
+  for(std::size_t k = wanted; k < growth.size(); ++k)
+  {
+    const std::size_t i = growth[k].second, a = round[i].first, b = round[i].second;
+    accepted[i] = 0;
+    tried.erase(Tried(a, version[a], b, version[b]));
+  }
+}
+
+// No chart budget: merge_kept_charts() merges only unions that meet the bound.
+constexpr std::size_t no_chart_budget = std::size_t(-1);
+
+// With a `chart_budget` (see max_number_of_charts), merging goes on past
+// the bound until at most `chart_budget` charts are left or no union of
+// two adjacent charts is a disk with a valid map: a union is accepted when
+// its map is valid, whatever its distortion. Pairs are tried by the growth
+// of the area-weighted sum of excesses predicted from the parts' excesses,
+// then by the merge score; a round solves twice as many pairs as charts are
+// over the budget and keeps those whose measured growth is least, at most
+// as many as charts are over, so the budget is met exactly when it can be.
 template <typename Rule, typename ForEach>
 std::size_t merge_kept_charts(const Indexed_triangle_mesh& m, Region_topology& topology, std::vector<Kept_chart>& kept,
                               const Rule& rule, Parameterization_method method, bool use_fallback,
-                              const ForEach& for_each, const std::unordered_set<std::uint64_t>& rejected_regions)
+                              const ForEach& for_each, const std::unordered_set<std::uint64_t>& rejected_regions,
+                              std::size_t chart_budget = no_chart_budget)
 {
+  const bool to_budget = chart_budget != no_chart_budget;
   const std::size_t n = kept.size();
   std::vector<Index> label(m.number_of_faces(), no_index);
   std::vector<double> area(n, 0), excess(n, 0);
@@ -106,22 +146,29 @@ std::size_t merge_kept_charts(const Indexed_triangle_mesh& m, Region_topology& t
   typedef std::tuple<std::size_t, std::size_t, std::size_t, std::size_t> Tried;  // a, version, b, version
   std::set<Tried> tried;
   std::size_t merges = 0;
+  std::size_t alive = n;
   // Rounds end: every round tries at least one new (pair, versions), a
   // failure is never retried with the same versions, and a success removes
   // a chart (at most n - 1 of them).
-  for(;;)
+  while(!to_budget || alive > chart_budget)
   {
-    std::vector<std::tuple<double, std::size_t, std::size_t> > candidates;  // -score, a, b
+    // (predicted excess of the union, with a budget), -score, a, b
+    std::vector<std::tuple<double, double, std::size_t, std::size_t> > candidates;
     for(std::size_t a = 0; a < n; ++a)
       if(kept[a].alive)
         for(const auto& entry : shared[a])
         {
           const std::size_t b = entry.first;
-          if(b <= a || !(excess[a] + excess[b] <= largest_excess_sum) || tried.count(Tried(a, version[a], b, version[b])) ||
+          const double predicted = excess[a] + excess[b];
+          if(b <= a || (!to_budget && !(predicted <= largest_excess_sum)) ||
+             tried.count(Tried(a, version[a], b, version[b])) ||
              rule.too_large(kept[a].chart.faces.size() + kept[b].chart.faces.size()))
             continue;
           const double larger = (std::max)(area[a], area[b]);
-          candidates.emplace_back(larger > 0 ? -entry.second / std::sqrt(larger) : 0., a, b);
+          // Over the budget: the predicted growth of the area-weighted sum of excesses.
+          const double growth = predicted * (area[a] + area[b]) - excess[a] * area[a] - excess[b] * area[b];
+          candidates.emplace_back(to_budget && std::isfinite(growth) ? growth : 0.,
+                                  larger > 0 ? -entry.second / std::sqrt(larger) : 0., a, b);
         }
     if(candidates.empty())
       break;
@@ -132,9 +179,12 @@ std::size_t merge_kept_charts(const Indexed_triangle_mesh& m, Region_topology& t
     std::vector<char> busy(n, 0);
     for(const auto& c : candidates)
     {
-      const std::size_t a = std::get<1>(c), b = std::get<2>(c);
+      const std::size_t a = std::get<2>(c), b = std::get<3>(c);
       if(busy[a] || busy[b])
         continue;
+      // Twice the pairs needed are solved, the best of them by their measured excess are taken.
+      if(to_budget && round.size() >= 2 * (alive - chart_budget))
+        break;
       tried.insert(Tried(a, version[a], b, version[b]));
       const std::vector<Index>& fa = kept[a].chart.faces;
       const std::vector<Index>& fb = kept[b].chart.faces;
@@ -153,7 +203,8 @@ std::size_t merge_kept_charts(const Indexed_triangle_mesh& m, Region_topology& t
       // is not solved: traced on the 17,757 unions solved for 35 meshes,
       // 150 such unions were rejected (18 % of the faces solved) and 17
       // of the 9,731 accepted ones would have been.
-      if(rejected_regions.count(region_key(faces)) != 0 || rule.predicted_too_curved(faces) ||
+      // Over the budget, a union rejected for the bound may still be taken.
+      if((!to_budget && (rejected_regions.count(region_key(faces)) != 0 || rule.predicted_too_curved(faces))) ||
          !topology.is_disk(faces))
         continue;
       busy[a] = busy[b] = 1;
@@ -177,6 +228,16 @@ std::size_t merge_kept_charts(const Indexed_triangle_mesh& m, Region_topology& t
       // ARAP from the two maps glued rather than from LSCM: half the time
       // on the merges, the same charts on 10 meshes of CGAL's data.
       const Chart_uv start = glue_chart_maps(a, b, unions[i]);
+      if(to_budget)
+      {
+        // Any valid map will do: the fallbacks are tried, ARAP runs to the end.
+        outcomes[i] = parameterize_chart_from(m, unions[i], method, use_fallback, start.empty() ? nullptr : &start,
+                                              On_invalid_map::redo, nullptr);
+        accepted[i] = outcomes[i].valid ? 1 : 0;
+        if(accepted[i] && !rule.bound.is_unbounded())
+          union_excess[i] = rule.excess(unions[i]);
+        return;
+      }
       if(!start.empty() && rule.glued_too_concave(unions[i], start))
         return;
       Early_look look{ &early_look, Early_judgement() };
@@ -184,6 +245,9 @@ std::size_t merge_kept_charts(const Indexed_triangle_mesh& m, Region_topology& t
                                             rule.on_invalid_map(), &look);
       accepted[i] = rule(unions[i], outcomes[i], union_excess[i], look.ended) ? 0 : 1;
     });
+
+    if(to_budget)
+      keep_least_excess_growth(round, union_excess, area, excess, alive - chart_budget, accepted, tried, version);
 
     for(std::size_t i = 0; i < round.size(); ++i)
     {
@@ -201,7 +265,9 @@ std::size_t merge_kept_charts(const Indexed_triangle_mesh& m, Region_topology& t
       keep.chart = std::move(unions[i]);
       keep.outcome.used = outcomes[i].used;
       keep.outcome.fallback = outcomes[i].fallback;
+      keep.outcome.valid = true;  // an invalid part (use_fallback(false)) may join a valid union
       gone.alive = false;
+      --alive;
       for(Index f : gone.chart.faces)
         label[f] = static_cast<Index>(a);
       area[a] += area[b];

@@ -348,6 +348,47 @@ inline Face_group_moves keep_face_groups_whole(const Indexed_triangle_mesh& m,
   return result;
 }
 
+// keep_face_groups_whole() for the polygons of the caller's mesh:
+// `polygon_of[f]` is the polygon of indexed face f. Polygons are tried in
+// the input order of their first face, so that the result does not depend
+// on the indexed mesh's numbering; the labels are then renumbered 0..P-1 in
+// input order of first face, as patches emptied by the moves leave gaps.
+template <typename PolygonId>
+Face_group_moves keep_polygons_whole(const Indexed_triangle_mesh& m, const std::vector<PolygonId>& polygon_of,
+                                     std::vector<Index>& labels)
+{
+  const std::size_t n = m.number_of_faces();
+  std::vector<Index> in_input_order(n);
+  for(Index f = 0; f < n; ++f)
+    in_input_order[m.input_position(f)] = f;
+  std::vector<Index> by_polygon = in_input_order;
+  std::stable_sort(by_polygon.begin(), by_polygon.end(),
+                   [&](Index a, Index b) { return polygon_of[a] < polygon_of[b]; });
+  std::vector<std::vector<Index> > groups;
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    if(i == 0 || polygon_of[by_polygon[i]] != polygon_of[by_polygon[i - 1]])
+      groups.emplace_back();
+    groups.back().push_back(by_polygon[i]);
+  }
+  if(groups.size() == n)
+    return Face_group_moves();  // every polygon a triangle: nothing to keep whole
+  std::sort(groups.begin(), groups.end(), [&](const std::vector<Index>& a, const std::vector<Index>& b) {
+    return m.input_position(a.front()) < m.input_position(b.front());
+  });
+  const Face_group_moves moves = keep_face_groups_whole(m, groups, labels);
+  std::vector<Index> renumbered(n, no_index);
+  Index next = 0;
+  for(Index f : in_input_order)
+  {
+    Index& id = renumbered[labels[f]];
+    if(id == no_index)
+      id = next++;
+    labels[f] = id;
+  }
+  return moves;
+}
+
 } // namespace internal
 } // namespace Disk_segmentation
 } // namespace CGAL

@@ -290,6 +290,27 @@ void split_pinched_vertex(Index v,
   }
 }
 
+// split_pinched_vertex() for each of `vertices` (`slot[v]` is v's position
+// in it, `no_index` for the other vertices), with one pass over the faces.
+template <typename VertexHandles>
+void split_into_fans(const std::vector<Index>& vertices, const std::vector<Index>& slot,
+                     VertexHandles& vertex_handles, Indexed_triangle_mesh& m)
+{
+  if(vertices.empty())
+    return;
+  std::vector<std::vector<std::pair<Index, int> > > around(vertices.size());
+  for(Index f = 0; f < m.number_of_faces(); ++f)
+    for(int i = 0; i < 3; ++i)
+      if(slot[m.corners[f][i]] != no_index)
+        around[slot[m.corners[f][i]]].emplace_back(f, i);
+  for(std::size_t i = 0; i < vertices.size(); ++i)
+    split_pinched_vertex(vertices[i], around[i], vertex_handles, m);
+  // Faces keep their smallest vertex first (see Indexed_triangle_mesh).
+  for(const auto& corners_at_vertex : around)
+    for(const std::pair<Index, int>& corner : corners_at_vertex)
+      put_smallest_vertex_first(m.corners[corner.first], m.neighbors[corner.first]);
+}
+
 // Checks what the algorithms rely on beyond triangles: finite coordinates.
 // The faces around a vertex must form one fan (open or closed) for the
 // algorithms; a pinched vertex, whose faces form several, is split in the
@@ -335,21 +356,38 @@ std::size_t check_and_split_vertices(const TriangleMesh& tm,
       pinched.push_back(static_cast<Index>(v));
     }
   }
-  if(pinched.empty())
-    return 0;
+  split_into_fans(pinched, pinched_slot, vertex_handles, m);
+  return m.number_of_vertices() - number_of_vertices;
+}
 
-  std::vector<std::vector<std::pair<Index, int> > > around(pinched.size());
+// Faces of different groups (`group[f]`, e.g. materials) never share a
+// chart: the indexed mesh is cut along the edges between them (no neighbor
+// across), as if they were borders, and a vertex on such an edge gets one
+// copy per fan left around it (see split_pinched_vertex()), so that every
+// pass of the package sees the groups as separate surfaces. Returns the
+// number of vertices added.
+template <typename Group, typename VertexHandles>
+std::size_t cut_between_face_groups(const std::vector<Group>& group, VertexHandles& vertex_handles,
+                                    Indexed_triangle_mesh& m)
+{
+  const std::size_t number_of_vertices = m.number_of_vertices();
+  std::vector<Index> cut_slot(number_of_vertices, no_index);
+  std::vector<Index> cut_vertices;
   for(Index f = 0; f < m.number_of_faces(); ++f)
     for(int i = 0; i < 3; ++i)
-      if(pinched_slot[m.corners[f][i]] != no_index)
-        around[pinched_slot[m.corners[f][i]]].emplace_back(f, i);
-  for(std::size_t i = 0; i < pinched.size(); ++i)
-    split_pinched_vertex(pinched[i], around[i], vertex_handles, m);
-
-  // Faces keep their smallest vertex first (see Indexed_triangle_mesh).
-  for(const auto& corners_at_vertex : around)
-    for(const std::pair<Index, int>& corner : corners_at_vertex)
-      put_smallest_vertex_first(m.corners[corner.first], m.neighbors[corner.first]);
+    {
+      const Index g = m.neighbors[f][i];
+      if(g == no_index || group[f] == group[g])
+        continue;
+      m.neighbors[f][i] = no_index;
+      for(Index v : { m.corners[f][i], m.corners[f][(i + 1) % 3] })
+        if(cut_slot[v] == no_index)
+        {
+          cut_slot[v] = static_cast<Index>(cut_vertices.size());
+          cut_vertices.push_back(v);
+        }
+    }
+  split_into_fans(cut_vertices, cut_slot, vertex_handles, m);
   return m.number_of_vertices() - number_of_vertices;
 }
 
@@ -687,6 +725,18 @@ void build_indexed_triangle_mesh(const TriangleMesh& tm,
   std::vector<vertex_descriptor> no_new_vertex;
   build_indexed_triangle_mesh(tm, faces(tm), coordinates_of, face_index_of, vertex_index_of, no_new_vertex, out);
   check_and_split_vertices(tm, vertex_handles, out);
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters,
+                                                       Disk_segmentation::internal_np::face_material_map_t>::value)
+  {
+    const auto materials =
+      checked_face_group_map<TriangleMesh>(get_parameter(np, Disk_segmentation::internal_np::face_material_map));
+    typedef typename boost::property_traits<std::decay_t<decltype(materials)> >::value_type Material;
+    std::vector<Material> material;
+    material.reserve(face_handles.size());
+    for(face_descriptor f : face_handles)
+      material.push_back(get(materials, f));
+    cut_between_face_groups(material, vertex_handles, out);
+  }
   renumber_for_locality(out, face_handles, vertex_handles);
   normalize_coordinates(out);
   if(vertex_handles_out != nullptr)

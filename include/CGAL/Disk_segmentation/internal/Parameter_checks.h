@@ -30,7 +30,8 @@ namespace Disk_segmentation {
 namespace internal {
 
 // A count parameter (number_of_seeds, number_of_subsamples,
-// texture_resolution, number_of_threads, max_chart_faces) as a std::size_t.
+// texture_resolution, number_of_threads, max_chart_faces,
+// max_number_of_charts) as a std::size_t.
 // A floating-point value would be truncated without a word, so it does not
 // compile; a negative one would wrap around to a huge count, so it throws.
 template <typename T>
@@ -38,7 +39,7 @@ std::size_t count_parameter(const T& value, const char* name)
 {
   static_assert(std::is_integral<T>::value && !std::is_same<T, bool>::value,
                 "CGAL::Disk_segmentation: count parameters (number_of_seeds, number_of_subsamples, "
-                "texture_resolution, number_of_threads, max_chart_faces) take an integer, not a "
+                "texture_resolution, number_of_threads, max_chart_faces, max_number_of_charts) take an integer, not a "
                 "floating-point or boolean value");
   if constexpr(std::is_signed<T>::value)
     if(value < 0)
@@ -104,6 +105,20 @@ auto checked_patch_map(const FacePatchMap& map)
     return CGAL::Constant_property_map<face_descriptor, std::size_t>();
 }
 
+// face_polygon_map and face_material_map: one value per face.
+template <typename TriangleMesh, typename FaceMap>
+auto checked_face_group_map(const FaceMap& map)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  constexpr bool ok = keyed_by<face_descriptor, FaceMap>;
+  static_assert(ok, "CGAL::Disk_segmentation: face_polygon_map and face_material_map must have face_descriptor "
+                    "as key type (one polygon or material per face)");
+  if constexpr(ok)
+    return map;
+  else
+    return CGAL::Constant_property_map<face_descriptor, std::size_t>();
+}
+
 // A CGAL point (Kernel::Point_3 or any type with its kernel as `R`, which is
 // what CGAL::Kernel_traits reads): coordinates are read through its kernel.
 template <typename Point, typename = void>
@@ -125,12 +140,14 @@ typedef std::tuple<
   Disk_segmentation::internal_np::padding_in_texels_t, Disk_segmentation::internal_np::number_of_threads_t,
   Disk_segmentation::internal_np::progress_callback_t, Disk_segmentation::internal_np::require_disk_patches_t,
   Disk_segmentation::internal_np::max_area_distortion_t, Disk_segmentation::internal_np::max_chart_faces_t,
+  Disk_segmentation::internal_np::max_number_of_charts_t,
   Disk_segmentation::internal_np::max_angle_distortion_t, Disk_segmentation::internal_np::max_stretch_t,
   Disk_segmentation::internal_np::max_area_scale_t, Disk_segmentation::internal_np::max_stretch_p95_t,
   Disk_segmentation::internal_np::min_convexity_t,
   Disk_segmentation::internal_np::merge_tree_t, Disk_segmentation::internal_np::distortion_bound_t,
   Disk_segmentation::internal_np::smooth_borders_t, Disk_segmentation::internal_np::merge_charts_t,
-  Disk_segmentation::internal_np::straighten_borders_t,
+  Disk_segmentation::internal_np::straighten_borders_t, Disk_segmentation::internal_np::face_material_map_t,
+  Disk_segmentation::internal_np::face_polygon_map_t,
   CGAL::internal_np::vertex_point_t, CGAL::internal_np::geom_traits_t, CGAL::internal_np::face_index_t,
   CGAL::internal_np::vertex_index_t, CGAL::internal_np::random_seed_t, CGAL::internal_np::face_patch_t,
   CGAL::internal_np::all_default_t>
