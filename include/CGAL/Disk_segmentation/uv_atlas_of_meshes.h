@@ -56,8 +56,9 @@ struct Multi_mesh_atlas_report
 /// @param uv_maps one per mesh: receives its per-corner UVs in the common atlas
 /// @param face_patch_maps one per mesh: receives the chart id of every face; ids are numbered across
 ///        the meshes (see `Multi_mesh_atlas_report::first_chart`)
-/// @param np the named parameters of `uv_atlas()`, read for every mesh, except `face_patch_map`,
-///        `merge_tree` and `seeds_output_iterator`, which do not apply
+/// @param np the named parameters of `uv_atlas()`, read for every mesh (a `vertex_point_map`, a
+///        `face_material_map` or a `face_polygon_map` must then be valid for all of them), except
+///        `face_patch_map`, `merge_tree` and `seeds_output_iterator`, which do not apply
 ///
 /// @throws Input_error on a bad mesh (naming its position) or parameter, or when the charts of all
 ///         meshes are more than the padding leaves room for
