@@ -132,6 +132,21 @@ std::vector<std::int64_t> read_material_ids(const std::string& path, std::size_t
   return ids;
 }
 
+// Below this share of the texture, the padding takes most of it: said
+// rather than left for the user to find in the picture.
+constexpr double low_packing_efficiency = 0.25;
+
+void warn_if_sparse(const DS::Packing_report& packing, std::size_t charts, unsigned int resolution, double padding)
+{
+  if(!(packing.efficiency < low_packing_efficiency))
+    return;
+  std::fprintf(stderr,
+               "disk_uv: warning: the charts cover only %.1f%% of the texture: at --resolution %u, --padding %g "
+               "texels around each of %zu charts takes the rest (raise --resolution, lower --padding or set "
+               "--max-charts)\n",
+               100 * packing.efficiency, resolution, padding, charts);
+}
+
 // Several inputs, one atlas (uv_atlas_of_meshes()): the meshes as read,
 // their maps and what the library reported.
 struct Several_atlas
@@ -487,6 +502,7 @@ int main(int argc, char** argv)
       outputs.write_all(writers);
       if(!quiet)
         print_several_summary(several);
+      warn_if_sparse(several.report.packing, several.report.first_chart.back(), resolution, padding);
       return several_charts_are_valid(several) ? 0 : 1;
     }
 
@@ -542,6 +558,7 @@ int main(int argc, char** argv)
     if(!quiet && report.polygons_moved_whole + report.polygons_left_across_charts > 0)
       std::printf("%s: %zu polygons split by the charts moved whole into one of them, %zu left across charts\n",
                   input.c_str(), report.polygons_moved_whole, report.polygons_left_across_charts);
+    warn_if_sparse(report.packing, report.number_of_charts, resolution, padding);
     if(!report.parameterization.chart_budget_met)
       std::cerr << "disk_uv: warning: " << report.number_of_charts << " charts, over --max-charts (" << max_charts
                 << "): no two adjacent charts unite into one disk with a valid map" << std::endl;

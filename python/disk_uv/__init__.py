@@ -17,6 +17,7 @@ problem (shapes, dtypes, NaN, indices out of range, non-manifold meshes).
 """
 
 import json
+import warnings
 import os
 
 from . import _disk_uv
@@ -70,6 +71,17 @@ class Atlas:
     def __repr__(self):
         return "<disk_uv.Atlas: %d faces, %d charts, packing %.1f%%>" % (
             len(self.chart_ids), self.number_of_charts, 100 * self.report["packing"]["efficiency"])
+
+
+# Below this share of the texture, the padding takes most of it (as the disk_uv tool warns).
+_LOW_PACKING_EFFICIENCY = 0.25
+
+
+def _warn_if_sparse(efficiency, charts, resolution, padding):
+    if efficiency < _LOW_PACKING_EFFICIENCY:
+        warnings.warn("the charts cover only %.1f%% of the texture: at resolution=%d, padding=%g texels around "
+                      "each of %d charts takes the rest (raise resolution, lower padding or set max_charts)"
+                      % (100 * efficiency, resolution, padding, charts), RuntimeWarning, stacklevel=3)
 
 
 def _checked_progress(progress):
@@ -171,10 +183,16 @@ def atlas(vertices, faces=None, method=_disk_uv.default_parameterization_method,
             raise ArgumentTypeError("atlas() takes vertices and faces, or a list of (vertices, faces) pairs, not %s"
                                     % type(vertices).__name__)
         results = _disk_uv.atlas_of_meshes(list(vertices), options)
-        return [Atlas(v, f, r["uvs"], r["chart_ids"], json.loads(r["report"]))
-                for (v, f), r in zip(vertices, results)]
+        atlases = [Atlas(v, f, r["uvs"], r["chart_ids"], json.loads(r["report"]))
+                   for (v, f), r in zip(vertices, results)]
+        if atlases:
+            _warn_if_sparse(atlases[0].report["packing"]["efficiency"], atlases[0].report["total_charts"],
+                            resolution, padding)
+        return atlases
     result = _disk_uv.atlas(vertices, faces, options)
-    return Atlas(vertices, faces, result["uvs"], result["chart_ids"], json.loads(result["report"]))
+    atlas = Atlas(vertices, faces, result["uvs"], result["chart_ids"], json.loads(result["report"]))
+    _warn_if_sparse(atlas.report["packing"]["efficiency"], atlas.number_of_charts, resolution, padding)
+    return atlas
 
 
 def parametrize(vertices, faces, **options):

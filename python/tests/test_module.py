@@ -156,6 +156,12 @@ def test_several_meshes_share_one_atlas_and_keep_their_charts():
         disk_uv.atlas([parts[0], (parts[1][0], parts[1][1][:, :2])])
 
 
+def test_a_texture_too_small_for_the_padding_is_said():
+    vertices, faces = mesh("elephant.off")
+    with pytest.warns(RuntimeWarning, match=r"cover only [0-9.]+% of the texture: at resolution=32, padding=2"):
+        disk_uv.atlas(vertices, faces, resolution=32)
+
+
 def test_no_chart_spans_two_materials():
     vertices, faces = mesh("elephant.off")
     centroids = vertices[faces].mean(axis=1)

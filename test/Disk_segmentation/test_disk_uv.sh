@@ -123,6 +123,10 @@ expect_error 1 "--material-ids: .* has 10 ids for 5558 faces" "$data/elephant.of
 printf '0\n1\nx2\n' > "$work/bad_ids.txt"
 expect_error 1 "--material-ids: .* line 3: 'x2' is not an integer" "$data/elephant.off" --material-ids "$work/bad_ids.txt"
 expect_error 1 "--material-ids: .*cannot open" "$data/elephant.off" --material-ids "$work/no_such_ids.txt"
+# A texture too small for the charts and their padding: packed, and said.
+"$tool" "$data/elephant.off" --resolution 32 -o "$work/small.obj" > /dev/null 2> "$work/err.txt"
+[ $? -eq 0 ] && grep -qE "warning: the charts cover only [0-9.]+% of the texture: at --resolution 32, --padding 2" \
+  "$work/err.txt" && [ -s "$work/small.obj" ] && pass || fail "a sparse packing is not said: $(cat "$work/err.txt")"
 # Several inputs, one atlas: each mesh keeps the charts it gets alone.
 "$tool" "$data/elephant.off" --patch-ids "$work/alone_a.txt" > /dev/null 2>&1
 "$tool" "$data/eight.off" --patch-ids "$work/alone_b.txt" > /dev/null 2>&1
