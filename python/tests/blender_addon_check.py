@@ -98,6 +98,9 @@ def run():
     export_and_check(elephant, folder, "elephant_budget")
     islands = components([uv_ids for _, uv_ids in read_obj(os.path.join(folder, "elephant_budget.obj"))[2]])
     check(len(set(islands)) == 20, "max_charts=20 gave %d UV islands" % len(set(islands)))
+    # A texture too small for the margin: unwrapped all the same (the operator warns).
+    check(bpy.ops.uv.disk_uv_unwrap(resolution=32) == {"FINISHED"}, "unwrap on a small texture failed")
+    export_and_check(elephant, folder, "elephant_small_texture")
 
     # Two quad objects at once (a torus: all quads, genus 1; a UV sphere:
     # quads and triangle fans), their polygons kept.

@@ -26,6 +26,8 @@ bl_info = {
     "category": "UV",
 }
 
+import warnings
+
 import bpy
 import numpy
 from bpy.props import BoolProperty, EnumProperty, FloatProperty, IntProperty
@@ -131,7 +133,7 @@ class UV_OT_disk_uv_unwrap(bpy.types.Operator):
         active = context.view_layer.objects.active
         if mode == "EDIT_MESH":
             bpy.ops.object.mode_set(mode="OBJECT")  # writes the edit-mode mesh to obj.data
-        done, failed = 0, []
+        done, failed, warned = 0, [], []
         try:
             for obj in objects:
                 vertices, triangles, loops, polygons = mesh_arrays(obj, selected_only=(mode == "EDIT_MESH"))
@@ -144,21 +146,26 @@ class UV_OT_disk_uv_unwrap(bpy.types.Operator):
                     obj.data.polygons.foreach_get("material_index", material_of_polygon)
                     materials = material_of_polygon[polygons]
                 try:
-                    atlas = disk_uv.atlas(vertices, triangles, method=self.method, unbounded=self.unbounded,
-                                          max_angle_distortion=self.max_angle_distortion,
-                                          padding=self.margin, resolution=self.resolution,
-                                          max_charts=self.max_charts or None, face_groups=polygons,
-                                          materials=materials)
+                    with warnings.catch_warnings(record=True) as caught:
+                        warnings.simplefilter("always", RuntimeWarning)
+                        atlas = disk_uv.atlas(vertices, triangles, method=self.method, unbounded=self.unbounded,
+                                              max_angle_distortion=self.max_angle_distortion,
+                                              padding=self.margin, resolution=self.resolution,
+                                              max_charts=self.max_charts or None, face_groups=polygons,
+                                              materials=materials)
                 except ValueError as error:
                     failed.append("%s: %s" % (obj.name, error))
                     continue
+                for warning in caught:
+                    # The module names its keyword; the panel calls the padding "Margin".
+                    warned.append("%s: %s" % (obj.name, str(warning.message).replace("padding", "margin")))
                 write_uvs(obj.data, loops, atlas.uvs)
                 done += 1
         finally:
             if mode == "EDIT_MESH":
                 context.view_layer.objects.active = active
                 bpy.ops.object.mode_set(mode="EDIT")
-        for message in failed:
+        for message in failed + warned:
             self.report({"WARNING"}, message)
         if done == 0:
             self.report({"ERROR"}, "no mesh unwrapped")
