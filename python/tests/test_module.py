@@ -375,7 +375,11 @@ def test_a_progress_callback_sees_the_stages_and_can_cancel():
     followed = disk_uv.atlas(vertices, faces, progress=lambda *report: seen.append(report))
     plain = disk_uv.atlas(vertices, faces)
     assert numpy.array_equal(followed.chart_ids, plain.chart_ids) and numpy.array_equal(followed.uvs, plain.uvs)
-    assert [stage for stage, _, _ in seen].count("packing") == 2
+    # The packing: its start, each trial layout (out of 16), its end.
+    packing = [(done, total) for stage, done, total in seen if stage == "packing"]
+    assert packing[0] == (0, 1) and packing[-1] == (1, 1) and len(packing) > 2
+    trials = packing[1:-1]
+    assert all(total == 16 for _, total in trials) and [done for done, _ in trials] == sorted(d for d, _ in trials)
     assert numpy.array_equal(disk_uv.segment(vertices, faces, progress=lambda *report: True),
                              disk_uv.segment(vertices, faces))
 

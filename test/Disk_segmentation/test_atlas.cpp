@@ -1409,6 +1409,20 @@ TEST(Atlas, AFailedOrCancelledCallLeavesTheCallersMapsAsTheyWere)
     }
   EXPECT_NE(std::find(stages_seen.begin(), stages_seen.end(), "parameterization"), stages_seen.end());
 
+  // Inside the packer: its first trial's report (not the stage's "0 of 1") cancels too.
+  std::size_t trials_seen = 0;
+  const std::function<bool(const std::string&, std::size_t, std::size_t)> cancel_in_packer =
+    [&](const std::string& s, std::size_t, std::size_t total) {
+      if(s != "packing" || total == 1)
+        return true;
+      ++trials_seen;
+      return false;
+    };
+  EXPECT_THROW(DS::uv_atlas(tm, out.uv, outputs(DS::parameters::progress_callback(cancel_in_packer).number_of_threads(2u))),
+               DS::Cancelled);
+  EXPECT_EQ(trials_seen, 1u);
+  out.expect_untouched(tm, "cancelled inside the packer");
+
   const auto throw_in_packing = [](const std::string& s, std::size_t, std::size_t) {
     if(s == "packing")
       throw std::logic_error("user's own error");

@@ -11,6 +11,7 @@
 #include <CGAL/Disk_segmentation/internal/Chart_packer.h>
 #include <CGAL/Disk_segmentation/internal/Parameter_checks.h>
 #include <CGAL/Disk_segmentation/internal/Profile_packer.h>
+#include <CGAL/Disk_segmentation/internal/Progress.h>
 #include <CGAL/Disk_segmentation/internal/Raster_packer.h>
 #include <CGAL/Disk_segmentation/internal/parallel.h>
 #include <CGAL/Disk_segmentation/internal/Indexed_triangle_mesh.h>
@@ -73,7 +74,21 @@ struct Packing_settings
   double resolution;
   double padding;  // in texels
   unsigned int threads;  // 0: TBB's choice
+  // Told of every trial layout, so that a cancellation stops a long
+  // packing between two trials (it throws Cancelled); none if null.
+  Progress* progress = nullptr;
 };
+
+// Trials of the tight packer reported to the progress callback: one for
+// the rectangles, at most about eight for the profile packer and six for
+// the raster packer.
+constexpr std::size_t reported_packing_trials = 16;
+
+inline void report_packing_trial(const Packing_settings& s, std::size_t& trial)
+{
+  if(s.progress != nullptr)
+    (*s.progress)("packing", (std::min)(++trial, reported_packing_trials - 1), reported_packing_trials);
+}
 
 template <typename NamedParameters>
 Packing_settings packing_settings(const NamedParameters& np)
@@ -439,6 +454,7 @@ std::vector<Chart_similarity> shape_layout(const Chart_set<TriangleMesh>& charts
     input[p].number_of_corners = first_corner[p + 1] - first_corner[p];
   }
   const double hi = total > 0. ? 1. / std::sqrt(total) : rectangle_scale;
+  std::size_t trial = 0;  // reported, after the rectangles' (see report_packing_trial())
 
   // The profile packer's largest scale in [rectangle_scale, hi) at which
   // every chart fits, to 1 percent (about seven trials), and its
@@ -450,12 +466,14 @@ std::vector<Chart_similarity> shape_layout(const Chart_set<TriangleMesh>& charts
     packer.set_parallel(s.threads != 1);
     std::vector<Profile_placement> placement;
     double lo = rectangle_scale, top = hi;
+    report_packing_trial(s, trial);
     if(!(top > lo) || !packer.run(input, lo, placement))
       return 0.;
     best.swap(placement);
     while(top - lo > 1e-2 * lo)
     {
       const double mid = 0.5 * (lo + top);
+      report_packing_trial(s, trial);
       if(packer.run(input, mid, placement))
       {
         lo = mid;
@@ -485,8 +503,9 @@ std::vector<Chart_similarity> shape_layout(const Chart_set<TriangleMesh>& charts
     const double target = double(columns);
     const double tol = 0.01;
     const int max_trials = 6;
-    for(int trial = 0; trial < max_trials && fail > fit * (1. + tol); ++trial)
+    for(int raster_trial = 0; raster_trial < max_trials && fail > fit * (1. + tol); ++raster_trial)
     {
+      report_packing_trial(s, trial);
       const bool packed = packer.run(input, scale, placement);
       const double used = double(packer.used_rows());
       if(packed)
@@ -657,14 +676,16 @@ std::vector<Chart_similarity> grid_layout(const Chart_set<TriangleMesh>& charts,
 namespace internal {
 
 // pack_patches() on maps of the right key types.
+// `progress` is told of every trial layout (see report_packing_trial()).
 template <typename TriangleMesh, typename FacePatchMap, typename UVMap, typename NamedParameters>
 Packing_report pack_checked_patches(const TriangleMesh& tm, FacePatchMap face_patch_map, UVMap uv_map,
-                                    const NamedParameters& np)
+                                    const NamedParameters& np, Progress* progress = nullptr)
 {
   typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
   typedef typename boost::property_traits<UVMap>::value_type UV_point;
 
-  const Packing_settings settings = packing_settings(np);
+  Packing_settings settings = packing_settings(np);
+  settings.progress = progress;
   Packing_report report;
   if(faces(tm).empty())
     return report;
@@ -810,6 +831,12 @@ Packing_report pack_checked_patches(const TriangleMesh& tm, FacePatchMap face_pa
 ///     \cgalParamType{`unsigned int`}
 ///     \cgalParamDefault{`0`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{progress_callback}
+///     \cgalParamDescription{called as `("packing", trial, 16)` before each trial layout of the `TIGHT`
+///       packing; a `false` result stops it with `Cancelled` before any UV is written}
+///     \cgalParamType{a callable of `(const std::string&, std::size_t, std::size_t)` returning `bool` or `void`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_point_map}
 ///     \cgalParamDescription{a property map associating points to the vertices of `tm` (3D areas of `TIGHT`)}
 ///     \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key type and the traits' `Point_3` as value type}
@@ -842,8 +869,9 @@ Packing_report pack_patches(const TriangleMesh& tm,
 {
   static_assert(internal::Check_patch_map<FacePatchMap>::value, "");
   static_assert(internal::Check_named_parameters<NamedParameters>::value, "");
+  internal::Progress progress = internal::Progress::from(np);
   return internal::pack_checked_patches(tm, internal::checked_patch_map<TriangleMesh>(face_patch_map),
-                                        internal::checked_uv_map<TriangleMesh>(uv_map), np);
+                                        internal::checked_uv_map<TriangleMesh>(uv_map), np, &progress);
 }
 
 } // namespace Disk_segmentation

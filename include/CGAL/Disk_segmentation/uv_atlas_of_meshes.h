@@ -157,7 +157,8 @@ Multi_mesh_atlas_report uv_atlas_of_meshes(const std::vector<const TriangleMesh*
   report.packing = internal::pack_checked_patches(
     all, all_patch, all_uv,
     parameters::packing_method(packing.method).texture_resolution(static_cast<unsigned int>(packing.resolution))
-      .padding_in_texels(packing.padding).number_of_threads(packing.threads));
+      .padding_in_texels(packing.padding).number_of_threads(packing.threads),
+    &progress);
   report.packing_seconds = timer.time();
   progress("packing", 1, 1);
 
