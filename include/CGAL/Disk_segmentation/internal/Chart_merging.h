@@ -75,6 +75,14 @@ inline std::uint64_t region_key(const std::vector<Index>& sorted_faces)
   return key;
 }
 
+// How much merging charts a and b adds to the area-weighted sum of excesses
+// over the bound, if their union's excess is `union_excess`.
+inline double excess_growth(double union_excess, std::size_t a, std::size_t b, const std::vector<double>& area,
+                            const std::vector<double>& excess)
+{
+  return union_excess * (area[a] + area[b]) - excess[a] * area[a] - excess[b] * area[b];
+}
+
 // Over a chart budget, of the valid unions of a round, keeps the `wanted`
 // ones that add least to the area-weighted sum of excesses; the others are
 // forgotten as tried, since they failed on rank only.
@@ -89,7 +97,7 @@ void keep_least_excess_growth(const std::vector<std::pair<std::size_t, std::size
     if(accepted[i])
     {
       const std::size_t a = round[i].first, b = round[i].second;
-      const double g = union_excess[i] * (area[a] + area[b]) - excess[a] * area[a] - excess[b] * area[b];
+      const double g = excess_growth(union_excess[i], a, b, area, excess);
       growth.emplace_back(std::isfinite(g) ? g : std::numeric_limits<double>::max(), i);
     }
   std::sort(growth.begin(), growth.end());
@@ -166,7 +174,7 @@ std::size_t merge_kept_charts(const Indexed_triangle_mesh& m, Region_topology& t
             continue;
           const double larger = (std::max)(area[a], area[b]);
           // Over the budget: the predicted growth of the area-weighted sum of excesses.
-          const double growth = predicted * (area[a] + area[b]) - excess[a] * area[a] - excess[b] * area[b];
+          const double growth = excess_growth(predicted, a, b, area, excess);
           candidates.emplace_back(to_budget && std::isfinite(growth) ? growth : 0.,
                                   larger > 0 ? -entry.second / std::sqrt(larger) : 0., a, b);
         }
