@@ -28,6 +28,16 @@ inline double peak_rss_mb()
   return double(usage.ru_maxrss) / 1024.;
 }
 
+// The packing and its pages.
+inline nlohmann::json packing_report_json(const CGAL::Disk_segmentation::Packing_report& p)
+{
+  return { { "efficiency", p.efficiency },
+           { "texels_per_unit", p.texels_per_unit },
+           { "pages", p.number_of_pages },
+           { "page_efficiency", p.page_efficiency },
+           { "page_of_chart", p.page_of_chart } };
+}
+
 // Everything disk_uv's --report holds: sizes, input changes, stage times,
 // peak memory and one entry per chart. `input` names the mesh's source.
 inline nlohmann::json atlas_report_json(const std::string& input, std::size_t vertices,
@@ -66,7 +76,7 @@ inline nlohmann::json atlas_report_json(const std::string& input, std::size_t ve
                             { "chart_budget_met", r.parameterization.chart_budget_met } } },
     { "polygons", { { "moved_whole_into_one_chart", r.polygons_moved_whole },
                     { "left_across_charts", r.polygons_left_across_charts } } },
-    { "packing", { { "efficiency", r.packing.efficiency }, { "texels_per_unit", r.packing.texels_per_unit } } },
+    { "packing", packing_report_json(r.packing) },
     { "seconds", { { "read", read_seconds }, { "voronoi", r.voronoi_seconds }, { "refine", r.refine_seconds },
                    { "merge", r.merge_seconds }, { "parameterization", r.parameterization_seconds },
                    { "packing", r.packing_seconds }, { "total", r.total_seconds } } },

@@ -27,6 +27,7 @@
 #include <CGAL/Disk_segmentation/IO/write_atlas_GLB.h>
 #include <CGAL/Disk_segmentation/IO/write_atlas_OBJ.h>
 #include <CGAL/Disk_segmentation/IO/write_atlas_PNG.h>
+#include <CGAL/Disk_segmentation/IO/udim_tiles.h>
 #include "atlas_report_json.h"
 #include "mesh_io.h"
 #include "output_files.h"
@@ -52,6 +53,7 @@
 #include <string>
 #include <string_view>
 #include <vector>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace DS = CGAL::Disk_segmentation;
@@ -136,15 +138,52 @@ std::vector<std::int64_t> read_material_ids(const std::string& path, std::size_t
 // rather than left for the user to find in the picture.
 constexpr double low_packing_efficiency = 0.25;
 
-void warn_if_sparse(const DS::Packing_report& packing, std::size_t charts, unsigned int resolution, double padding)
+void warn_if_sparse(const DS::Packing_report& packing, std::size_t charts, unsigned int resolution, double padding,
+                    double texels_per_unit)
 {
   if(!(packing.efficiency < low_packing_efficiency))
     return;
+  if(texels_per_unit > 0)
+  {
+    // The density was asked for: what is left empty is the last page's room.
+    const std::string pages =
+      packing.number_of_pages == 1 ? "the page" : "the " + std::to_string(packing.number_of_pages) + " pages";
+    std::fprintf(stderr,
+                 "disk_uv: warning: the charts cover only %.1f%% of %s on the mean at --texels-per-unit %g (a page "
+                 "of --resolution %u texels holds more: lower --resolution or raise --texels-per-unit)\n",
+                 100 * packing.efficiency, pages.c_str(), texels_per_unit, resolution);
+    return;
+  }
   std::fprintf(stderr,
                "disk_uv: warning: the charts cover only %.1f%% of the texture: at --resolution %u, --padding %g "
                "texels around each of %zu charts takes the rest (raise --resolution, lower --padding or set "
                "--max-charts)\n",
                100 * packing.efficiency, resolution, padding, charts);
+}
+
+// `path` with the UDIM tile before its extension: "atlas.png" ->
+// "atlas.1002.png" (the names Blender's UDIM images read).
+std::string page_file_name(const std::string& path, unsigned int tile)
+{
+  const std::size_t slash = path.find_last_of('/');
+  const std::size_t dot = path.find_last_of('.');
+  const bool has_extension = dot != std::string::npos && (slash == std::string::npos || dot > slash + 1);
+  const std::string stem = has_extension ? path.substr(0, dot) : path;
+  return stem + "." + std::to_string(tile) + (has_extension ? path.substr(dot) : std::string());
+}
+
+void print_pages(const DS::Packing_report& packing, const std::vector<std::string>& pictures, bool quiet)
+{
+  if(quiet || packing.number_of_pages <= 1)
+    return;
+  std::printf("%zu pages at %g texels per unit, as UDIM tiles 1001 to %u in the UVs; covered:",
+              packing.number_of_pages, packing.texels_per_unit,
+              CGAL::Disk_segmentation::IO::udim_tile(packing.number_of_pages - 1));
+  for(double e : packing.page_efficiency)
+    std::printf(" %.1f%%", 100 * e);
+  std::printf("\n");
+  for(const std::string& picture : pictures)
+    std::printf("  %s\n", picture.c_str());
 }
 
 // Several inputs, one atlas (uv_atlas_of_meshes()): the meshes as read,
@@ -233,8 +272,7 @@ nlohmann::json several_report_json(const Several_atlas& s, const std::string& me
   }
   return { { "inputs", meshes },
            { "charts", s.report.first_chart.back() },
-           { "packing", { { "efficiency", s.report.packing.efficiency },
-                          { "texels_per_unit", s.report.packing.texels_per_unit } } },
+           { "packing", disk_uv::packing_report_json(s.report.packing) },
            { "seconds", { { "read", s.read_seconds }, { "packing", s.report.packing_seconds },
                           { "total", s.report.total_seconds } } },
            { "peak_rss_mb", disk_uv::peak_rss_mb() } };
@@ -350,7 +388,8 @@ int main(int argc, char** argv)
   std::string obj_path, glb_path, png_path, report_path, patch_ids_path, colored_path, material_ids_path;
   std::string method_name = DS::to_string(DS::default_parameterization_method), packer_name = "tight";
   std::size_t n = 10, k = 5;
-  double threshold = DS::regular_polygon_threshold(5), padding = 2;
+  double threshold = DS::regular_polygon_threshold(5), padding = 2, texels_per_unit = 0;
+  std::size_t max_pages = 64;
   DS::Distortion_bound bound;
   bool unbounded = false, rough_borders = false;
   std::size_t max_chart_faces = DS::default_max_chart_faces, max_charts = 0;
@@ -372,6 +411,12 @@ int main(int argc, char** argv)
     ->capture_default_str();
   app.add_option("--resolution", resolution, "target texture side in texels")->capture_default_str()->check(non_negative_count);
   app.add_option("--padding", padding, "gap around charts in texels")->capture_default_str();
+  app.add_option("--texels-per-unit", texels_per_unit,
+                 "fixed texel density (texels per unit of length, tight packer): the charts fill as many pages of "
+                 "--resolution texels as they need, laid out as UDIM tiles (0: the largest density that fits one "
+                 "page)")->capture_default_str();
+  app.add_option("--max-pages", max_pages, "most pages --texels-per-unit may fill")
+    ->capture_default_str()->check(non_negative_count);
   app.add_option("-n,--seeds", n, "number of farthest-point seeds")->capture_default_str()->check(non_negative_count);
   app.add_option("-k,--subsamples", k, "seeds used to re-sample a region that is not a disk")->capture_default_str()->check(non_negative_count);
   app.add_option("--threshold", threshold, "merge score threshold (eps_5 = 0.7624 by default)")->capture_default_str();
@@ -447,17 +492,41 @@ int main(int argc, char** argv)
     };
     add_output("-o", obj_path, [&](std::ostream& o) { CGAL::Disk_segmentation::IO::write_atlas_OBJ(o, mesh, patch, uv); });
     add_output("--glb", glb_path, [&](std::ostream& o) { CGAL::Disk_segmentation::IO::write_atlas_GLB(o, mesh, patch, uv); });
-    add_output("--atlas-png", png_path,
-               [&](std::ostream& o) { CGAL::Disk_segmentation::IO::write_atlas_PNG(o, mesh, patch, uv, resolution); });
+    // With a fixed density the pages are known at the end: one picture each.
+    if(texels_per_unit == 0)
+      add_output("--atlas-png", png_path,
+                 [&](std::ostream& o) { CGAL::Disk_segmentation::IO::write_atlas_PNG(o, mesh, patch, uv, resolution); });
+    std::vector<std::string> page_pictures;
+    auto add_page_outputs = [&](const DS::Packing_report& packing) {
+      if(texels_per_unit == 0 || png_path.empty())
+        return;
+      const std::size_t pages = packing.number_of_pages;
+      struct stat status;
+      if(pages > 1 && ::stat(png_path.c_str(), &status) == 0 && !S_ISREG(status.st_mode))
+        throw disk_uv::Tool_error("--atlas-png: the " + std::to_string(pages) + " pages need a picture each, named " +
+                                  "after a regular file's name (atlas.png: atlas.1001.png, ...); '" + png_path +
+                                  "' is not a regular file");
+      for(std::size_t page = 0; page < pages; ++page)
+      {
+        const unsigned int tile = CGAL::Disk_segmentation::IO::udim_tile(page);
+        page_pictures.push_back(pages == 1 ? png_path : page_file_name(png_path, tile));
+        add_output("--atlas-png", page_pictures.back(), [&, tile](std::ostream& o) {
+          CGAL::Disk_segmentation::IO::write_atlas_PNG(o, mesh, patch, uv, resolution, tile);
+        });
+      }
+      if(pages > 1)
+        CGAL::Disk_segmentation::IO::move_pages_to_udim_tiles(mesh, patch, uv, packing.page_of_chart);
+    };
     add_output("--patch-ids", patch_ids_path, [&](std::ostream& o) { write_patch_ids(o, mesh, patch); });
     add_output("--colored", colored_path, [&](std::ostream& o) { write_colored_ply(o, mesh, patch); });
     add_output("--report", report_path, [&](std::ostream& o) {
-      if(several_report != nullptr)
-        o << several_report->dump(2) << '\n';
-      else
-        o << disk_uv::atlas_report_json(input, mesh.number_of_vertices(), *report_ptr, method_name, packer_name,
-                                       read_seconds, *changes_ptr).dump(2)
-          << '\n';
+      nlohmann::json json = several_report != nullptr
+                              ? *several_report
+                              : disk_uv::atlas_report_json(input, mesh.number_of_vertices(), *report_ptr,
+                                                           method_name, packer_name, read_seconds, *changes_ptr);
+      // Several pages: the written UVs hold them as UDIM tiles.
+      json["packing"]["udim_tiles"] = json["packing"]["pages"].get<std::size_t>() > 1;
+      o << json.dump(2) << '\n';
     });
 
     const DS::Parameterization_method method = DS::parameterization_method_from_string(method_name);
@@ -480,7 +549,8 @@ int main(int argc, char** argv)
         .straighten_borders(!rough_borders)
         .max_chart_faces(max_chart_faces).max_number_of_charts(max_charts == 0 ? no_budget : max_charts)
         .packing_method(packer)
-        .texture_resolution(resolution).padding_in_texels(padding).number_of_threads(threads);
+        .texture_resolution(resolution).padding_in_texels(padding).texels_per_unit(texels_per_unit)
+        .max_number_of_pages(max_pages).number_of_threads(threads);
     DS::check_uv_atlas_parameters(settings);
     const auto keep_going = std::function<bool(const std::string&, std::size_t, std::size_t)>(
       [&display](const std::string& s, std::size_t d, std::size_t t) {
@@ -497,12 +567,15 @@ int main(int argc, char** argv)
       if(stop_signal != 0)
         throw DS::Cancelled("packing");
       combine(several, mesh, patch, uv);
+      add_page_outputs(several.report.packing);
       const nlohmann::json json = several_report_json(several, method_name, packer_name);
       several_report = &json;
       outputs.write_all(writers);
       if(!quiet)
         print_several_summary(several);
-      warn_if_sparse(several.report.packing, several.report.first_chart.back(), resolution, padding);
+      print_pages(several.report.packing, page_pictures, quiet);
+      warn_if_sparse(several.report.packing, several.report.first_chart.back(), resolution, padding,
+                     texels_per_unit);
       return several_charts_are_valid(several) ? 0 : 1;
     }
 
@@ -538,6 +611,7 @@ int main(int argc, char** argv)
 
     report_ptr = &report;
     changes_ptr = &changes;
+    add_page_outputs(report.packing);
     outputs.write_all(writers);
 
     if(!quiet && (changes.polygons_triangulated || changes.faces_removed || changes.vertices_added ||
@@ -558,7 +632,8 @@ int main(int argc, char** argv)
     if(!quiet && report.polygons_moved_whole + report.polygons_left_across_charts > 0)
       std::printf("%s: %zu polygons split by the charts moved whole into one of them, %zu left across charts\n",
                   input.c_str(), report.polygons_moved_whole, report.polygons_left_across_charts);
-    warn_if_sparse(report.packing, report.number_of_charts, resolution, padding);
+    print_pages(report.packing, page_pictures, quiet);
+    warn_if_sparse(report.packing, report.number_of_charts, resolution, padding, texels_per_unit);
     if(!report.parameterization.chart_budget_met)
       std::cerr << "disk_uv: warning: " << report.number_of_charts << " charts, over --max-charts (" << max_charts
                 << "): no two adjacent charts unite into one disk with a valid map" << std::endl;

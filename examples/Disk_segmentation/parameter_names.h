@@ -25,9 +25,9 @@ struct Parameter_name
   const char* argument;  // disk_uv.atlas()'s keyword
 };
 
-inline const std::array<Parameter_name, 16>& parameter_names()
+inline const std::array<Parameter_name, 18>& parameter_names()
 {
-  static const std::array<Parameter_name, 16> names = { {
+  static const std::array<Parameter_name, 18> names = { {
     { "number_of_seeds", "-n/--seeds", "n (seeds)" },
     { "number_of_subsamples", "-k/--subsamples", "k (subsamples)" },
     { "merge_threshold", "--threshold", "threshold" },
@@ -35,6 +35,8 @@ inline const std::array<Parameter_name, 16>& parameter_names()
     { "packing_method", "--packer", "packer" },
     { "texture_resolution", "--resolution", "resolution" },
     { "padding_in_texels", "--padding", "padding" },
+    { "texels_per_unit", "--texels-per-unit", "texels_per_unit" },
+    { "max_number_of_pages", "--max-pages", "max_pages" },
     { "number_of_threads", "--threads", "threads" },
     { "max_chart_faces", "--max-chart-faces", "max_chart_faces" },
     { "max_number_of_charts", "--max-charts", "max_charts" },

@@ -20,6 +20,8 @@ import json
 import warnings
 import os
 
+import numpy
+
 from . import _disk_uv
 from ._files import write_atomically
 
@@ -47,6 +49,9 @@ class Atlas:
         report: dict with the fields of ``disk_uv --report`` (``charts``
             holds one dict per chart with its method and distortion).
         seconds: per-stage times (``report["seconds"]``).
+        pages: (F,) uint32, the page of each face (all 0 unless
+            ``texels_per_unit`` spread the charts over several pages; ``uvs``
+            are then in the unit square of each face's page).
     """
 
     def __init__(self, vertices, faces, uvs, chart_ids, report):
@@ -64,21 +69,49 @@ class Atlas:
     def number_of_charts(self):
         return self.report["segmentation"]["charts"]
 
+    @property
+    def number_of_pages(self):
+        return self.report["packing"]["pages"]
+
+    @property
+    def pages(self):
+        page_of_chart = numpy.asarray(self.report["packing"]["page_of_chart"], dtype=numpy.uint32)
+        return page_of_chart[self.chart_ids] if len(page_of_chart) else numpy.zeros(len(self.chart_ids), numpy.uint32)
+
+    def udim_uvs(self):
+        """``uvs`` with each page moved to its UDIM tile: page ``p`` to
+        ``(u + p % 10, v + p // 10)``, tile ``1001 + p % 10 + 10 * (p // 10)``."""
+        pages = self.pages
+        uvs = numpy.array(self.uvs, dtype=numpy.float64, copy=True)
+        uvs[:, :, 0] += (pages % 10)[:, None]
+        uvs[:, :, 1] += (pages // 10)[:, None]
+        return uvs
+
+    def _written_uvs(self):
+        # Several pages are told apart in one file by their UDIM tiles.
+        return self.udim_uvs() if self.number_of_pages > 1 else self.uvs
+
     def xatlas_arrays(self):
-        """(vmapping, indices, uvs) as ``xatlas.parametrize`` returns them."""
-        return _disk_uv.xatlas_arrays(self.faces, self.uvs, self.chart_ids)
+        """(vmapping, indices, uvs) as ``xatlas.parametrize`` returns them
+        (with several pages, the UVs in their UDIM tiles)."""
+        return _disk_uv.xatlas_arrays(self.faces, self._written_uvs(), self.chart_ids)
 
     def __repr__(self):
-        return "<disk_uv.Atlas: %d faces, %d charts, packing %.1f%%>" % (
-            len(self.chart_ids), self.number_of_charts, 100 * self.report["packing"]["efficiency"])
+        pages = "" if self.number_of_pages <= 1 else ", %d pages" % self.number_of_pages
+        return "<disk_uv.Atlas: %d faces, %d charts, packing %.1f%%%s>" % (
+            len(self.chart_ids), self.number_of_charts, 100 * self.report["packing"]["efficiency"], pages)
 
 
 # Below this share of the texture, the padding takes most of it (as the disk_uv tool warns).
 _LOW_PACKING_EFFICIENCY = 0.25
 
 
-def _warn_if_sparse(efficiency, charts, resolution, padding):
-    if efficiency < _LOW_PACKING_EFFICIENCY:
+def _warn_if_sparse(efficiency, charts, resolution, padding, texels_per_unit):
+    if efficiency < _LOW_PACKING_EFFICIENCY and texels_per_unit:
+        warnings.warn("the charts cover only %.1f%% of their pages on the mean at texels_per_unit=%g (a page of "
+                      "resolution=%d texels holds more: lower resolution or raise texels_per_unit)"
+                      % (100 * efficiency, texels_per_unit, resolution), RuntimeWarning, stacklevel=3)
+    elif efficiency < _LOW_PACKING_EFFICIENCY:
         warnings.warn("the charts cover only %.1f%% of the texture: at resolution=%d, padding=%g texels around "
                       "each of %d charts takes the rest (raise resolution, lower padding or set max_charts)"
                       % (100 * efficiency, resolution, padding, charts), RuntimeWarning, stacklevel=3)
@@ -93,7 +126,7 @@ def _checked_progress(progress):
 
 def _atlas_options(method, max_angle_distortion, max_area_distortion, max_stretch, max_area_scale,
                    max_stretch_p95, min_convexity, unbounded, rough_borders, resolution, padding, threads, seed, n, k,
-                   threshold, packer, max_chart_faces, use_fallback, max_charts):
+                   threshold, packer, max_chart_faces, use_fallback, max_charts, texels_per_unit, max_pages):
     return {
         "method": method, "max_angle_distortion": max_angle_distortion,
         "max_area_distortion": max_area_distortion, "max_stretch": max_stretch,
@@ -102,6 +135,7 @@ def _atlas_options(method, max_angle_distortion, max_area_distortion, max_stretc
         "rough_borders": bool(rough_borders), "resolution": resolution, "padding": padding, "threads": threads,
         "seed": seed, "n": n, "k": k, "threshold": threshold, "packer": packer,
         "max_chart_faces": max_chart_faces, "use_fallback": bool(use_fallback), "max_charts": max_charts,
+        "texels_per_unit": texels_per_unit, "max_pages": max_pages,
     }
 
 
@@ -115,7 +149,7 @@ def atlas(vertices, faces=None, method=_disk_uv.default_parameterization_method,
           unbounded=False, rough_borders=False, resolution=1024, padding=2.0, threads=0, seed=None,
           n=10, k=5, threshold=_disk_uv.default_merge_threshold, packer="tight",
           max_chart_faces=_disk_uv.default_max_chart_faces, use_fallback=True, max_charts=None, face_groups=None,
-          materials=None, progress=None):
+          materials=None, progress=None, texels_per_unit=0.0, max_pages=64):
     """UV atlas of a triangle mesh; the options are those of the ``disk_uv`` tool.
 
     ``atlas([(vertices, faces), ...])`` makes one atlas for several meshes
@@ -139,6 +173,13 @@ def atlas(vertices, faces=None, method=_disk_uv.default_parameterization_method,
         unbounded: no distortion or convexity bound (the paper's charts).
         rough_borders: keep the saw-toothed chart borders of the paper (neither smoothed nor straightened).
         resolution, padding: texture side and gap between charts, in texels.
+        texels_per_unit: 0 (the largest density that fits the charts on one
+            page) or a fixed texel density, in texels per unit of length
+            ("tight" packer): the charts then fill as many pages of
+            ``resolution`` texels as they need (``Atlas.pages``,
+            ``report["packing"]["pages"]``); a chart larger than a page
+            raises ``ValueError``.
+        max_pages: the most pages ``texels_per_unit`` may fill.
         threads: at most this many threads (0: all); the result does not depend on it.
         seed: None (deterministic default first seed) or an integer seed.
         n, k, threshold: the segmentation's seeds, subsamples and merge threshold.
@@ -174,7 +215,8 @@ def atlas(vertices, faces=None, method=_disk_uv.default_parameterization_method,
     """
     options = _atlas_options(method, max_angle_distortion, max_area_distortion, max_stretch, max_area_scale,
                              max_stretch_p95, min_convexity, unbounded, rough_borders, resolution, padding, threads, seed, n,
-                             k, threshold, packer, max_chart_faces, use_fallback, max_charts)
+                             k, threshold, packer, max_chart_faces, use_fallback, max_charts, texels_per_unit,
+                             max_pages)
     options["face_groups"] = face_groups
     options["materials"] = materials
     options["progress"] = _checked_progress(progress)
@@ -187,11 +229,12 @@ def atlas(vertices, faces=None, method=_disk_uv.default_parameterization_method,
                    for (v, f), r in zip(vertices, results)]
         if atlases:
             _warn_if_sparse(atlases[0].report["packing"]["efficiency"], atlases[0].report["total_charts"],
-                            resolution, padding)
+                            resolution, padding, texels_per_unit)
         return atlases
     result = _disk_uv.atlas(vertices, faces, options)
     atlas = Atlas(vertices, faces, result["uvs"], result["chart_ids"], json.loads(result["report"]))
-    _warn_if_sparse(atlas.report["packing"]["efficiency"], atlas.number_of_charts, resolution, padding)
+    _warn_if_sparse(atlas.report["packing"]["efficiency"], atlas.number_of_charts, resolution, padding,
+                    texels_per_unit)
     return atlas
 
 
@@ -242,15 +285,16 @@ def load(path, repair=False, triangulate=False):
 def _save(format, path, atlas, overwrite):
     if not isinstance(atlas, Atlas):
         raise TypeError("expected a disk_uv.Atlas, not %s" % type(atlas).__name__)
-    data = _disk_uv.atlas_file(format, atlas.vertices, atlas.faces, atlas.uvs, atlas.chart_ids)
+    data = _disk_uv.atlas_file(format, atlas.vertices, atlas.faces, atlas._written_uvs(), atlas.chart_ids)
     write_atomically(path, data, overwrite)
 
 
 def save_obj(path, atlas, overwrite=True):
-    """Writes the atlas as OBJ (per-corner ``vt``, one group per chart), atomically."""
+    """Writes the atlas as OBJ (per-corner ``vt``, one group per chart), atomically; several pages are
+    written as UDIM tiles (:meth:`Atlas.udim_uvs`)."""
     _save("obj", path, atlas, overwrite)
 
 
 def save_glb(path, atlas, overwrite=True):
-    """Writes the atlas as binary glTF 2.0 (TEXCOORD_0), atomically."""
+    """Writes the atlas as binary glTF 2.0 (TEXCOORD_0), atomically; several pages as UDIM tiles."""
     _save("glb", path, atlas, overwrite)

@@ -467,6 +467,10 @@ def add_atlas_arguments(parser):
                        choices=disk_uv.METHODS)
     group.add_argument("--resolution", type=int, default=1024)
     group.add_argument("--padding", type=float, default=2.0)
+    group.add_argument("--texels-per-unit", type=float, default=0.0,
+                       help="fixed texel density; the charts fill as many pages as they need, written as UDIM "
+                            "tiles (0: fit one page)")
+    group.add_argument("--max-pages", type=int, default=64, help="most pages --texels-per-unit may fill")
     group.add_argument("--max-angle-distortion", type=float, default=d.default_max_angle_distortion)
     group.add_argument("--max-area-distortion", type=float, default=d.default_max_area_distortion)
     group.add_argument("--max-stretch", type=float, default=d.default_max_stretch)
@@ -515,7 +519,8 @@ def main(argv=None):
                          max_area_distortion=args.max_area_distortion, max_stretch=args.max_stretch,
                          max_area_scale=args.max_area_scale, max_stretch_p95=args.max_stretch_p95,
                          min_convexity=args.min_convexity, unbounded=args.unbounded, rough_borders=args.rough_borders, threads=args.threads,
-                         max_charts=args.max_charts or None)
+                         max_charts=args.max_charts or None, texels_per_unit=args.texels_per_unit,
+                         max_pages=args.max_pages)
     import disk_uv
     import numpy
     try:

@@ -420,6 +420,7 @@ auto atlas_settings(const py::dict& o, std::string& method_name, std::string& pa
       .straighten_borders(!o["rough_borders"].cast<bool>())
       .max_chart_faces(count_option(o, "max_chart_faces")).max_number_of_charts(max_charts).packing_method(packer)
       .texture_resolution(static_cast<unsigned int>(resolution)).padding_in_texels(real_option(o, "padding"))
+      .texels_per_unit(real_option(o, "texels_per_unit")).max_number_of_pages(count_option(o, "max_pages"))
       .number_of_threads(static_cast<unsigned int>(threads));
   DS::check_uv_atlas_parameters(settings);
   return settings;

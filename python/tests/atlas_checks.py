@@ -140,3 +140,35 @@ def obj_atlas_problems(path, resolution=512):
     if len(faces) == 0:
         return ["no faces"]
     return atlas_problems([uvs[t] for _, t in faces], [t for _, t in faces], resolution)
+
+
+def udim_atlas_problems(uv_faces, uv_vertex_faces=None, resolution=512):
+    """atlas_problems() of an atlas whose pages are UDIM tiles: (problems, tiles).
+
+    Every face belongs to the tile [i, i+1] x [j, j+1] that holds its UV
+    centroid; every chart (UV-connected faces when uv_vertex_faces is given,
+    else each face) must lie in one tile, and each tile, moved to [0, 1]^2,
+    must be a valid atlas. ``tiles`` lists the UDIM numbers used.
+    """
+    centroids = numpy.array([numpy.asarray(c, dtype=numpy.float64).mean(axis=0) for c in uv_faces])
+    if not numpy.isfinite(centroids).all():
+        return ["non-finite UVs"], []
+    tile_of = numpy.floor(centroids).astype(numpy.int64)
+    problems = []
+    if (tile_of < 0).any() or (tile_of[:, 0] > 9).any():
+        problems.append("a face outside the UDIM tiles (u in [0, 10), v >= 0)")
+        return problems, []
+    if uv_vertex_faces is not None:
+        labels = components(uv_vertex_faces)
+        for label in numpy.unique(labels):
+            tiles = {tuple(t) for t in tile_of[labels == label]}
+            if len(tiles) > 1:
+                problems.append("a chart spans the tiles %s" % sorted(tiles))
+    numbers = sorted({1001 + int(t[0]) + 10 * int(t[1]) for t in tile_of})
+    for number in numbers:
+        i, j = (number - 1001) % 10, (number - 1001) // 10
+        members = [f for f in range(len(uv_faces)) if tile_of[f][0] == i and tile_of[f][1] == j]
+        shifted = [numpy.asarray(uv_faces[f], dtype=numpy.float64) - (i, j) for f in members]
+        sub_faces = None if uv_vertex_faces is None else [uv_vertex_faces[f] for f in members]
+        problems += ["tile %d: %s" % (number, p) for p in atlas_problems(shifted, sub_faces, resolution)]
+    return problems, numbers

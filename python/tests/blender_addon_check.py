@@ -30,7 +30,7 @@ import numpy  # noqa: E402
 
 import disk_uv  # noqa: E402
 import disk_uv_unwrap  # noqa: E402
-from atlas_checks import atlas_problems, components, obj_atlas_problems, read_obj  # noqa: E402
+from atlas_checks import atlas_problems, components, obj_atlas_problems, read_obj, udim_atlas_problems  # noqa: E402
 
 DATA = os.environ.get("DISK_UV_DATA", os.path.join(source, "test", "Disk_segmentation", "data"))
 
@@ -98,6 +98,21 @@ def run():
     export_and_check(elephant, folder, "elephant_budget")
     islands = components([uv_ids for _, uv_ids in read_obj(os.path.join(folder, "elephant_budget.obj"))[2]])
     check(len(set(islands)) == 20, "max_charts=20 gave %d UV islands" % len(set(islands)))
+    # A fixed texel density, twice the one-tile fit: several UDIM tiles, each
+    # chart in one, each tile a valid atlas (the independent checker).
+    fit = disk_uv.atlas(*disk_uv.load(os.path.join(DATA, "elephant.off")))
+    density = 2 * fit.report["packing"]["texels_per_unit"]
+    check(bpy.ops.uv.disk_uv_unwrap(texel_density=density) == {"FINISHED"}, "unwrap at a texel density failed")
+    path = os.path.join(folder, "elephant_tiles.obj")
+    bpy.ops.wm.obj_export(filepath=path, export_selected_objects=True, export_uv=True, export_normals=False,
+                          export_materials=False, export_triangulated_mesh=False, apply_modifiers=False,
+                          forward_axis="Y", up_axis="Z")
+    _, uvs, faces = read_obj(path)
+    problems, tiles = udim_atlas_problems([uvs[t] for _, t in faces], [t for _, t in faces])
+    check(problems == [], "texel density: %s" % problems[:3])
+    check(len(tiles) >= 2 and tiles == list(range(1001, 1001 + len(tiles))),
+          "texel density %g gave the UDIM tiles %s" % (density, tiles))
+    print("checked elephant at", density, "texels per unit:", len(tiles), "UDIM tiles")
     # A texture too small for the margin: unwrapped all the same (the operator warns).
     check(bpy.ops.uv.disk_uv_unwrap(resolution=32) == {"FINISHED"}, "unwrap on a small texture failed")
     export_and_check(elephant, folder, "elephant_small_texture")

@@ -17,7 +17,7 @@ import pytest
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 import disk_uv  # noqa: E402
-from atlas_checks import atlas_problems, components, euler_characteristic, read_obj  # noqa: E402
+from atlas_checks import atlas_problems, components, euler_characteristic, read_obj, udim_atlas_problems  # noqa: E402
 
 DATA = os.environ.get("DISK_UV_DATA", os.path.join(os.path.dirname(__file__), "../../test/Disk_segmentation/data"))
 TOOL = os.environ.get("DISK_UV_TOOL")
@@ -160,6 +160,41 @@ def test_a_texture_too_small_for_the_padding_is_said():
     vertices, faces = mesh("elephant.off")
     with pytest.warns(RuntimeWarning, match=r"cover only [0-9.]+% of the texture: at resolution=32, padding=2"):
         disk_uv.atlas(vertices, faces, resolution=32)
+
+
+def test_a_fixed_texel_density_spreads_the_charts_over_pages(tmp_path):
+    vertices, faces = mesh("elephant.off")
+    fit = disk_uv.atlas(vertices, faces)
+    assert fit.number_of_pages == 1 and (fit.pages == 0).all()
+    density = 2 * fit.report["packing"]["texels_per_unit"]
+    paged = disk_uv.atlas(vertices, faces, texels_per_unit=density)
+    packing = paged.report["packing"]
+    assert paged.number_of_pages == packing["pages"] >= 2
+    assert abs(packing["texels_per_unit"] - density) < 1e-6 * density
+    # Same charts; each page a valid atlas of its own, each chart on one page.
+    assert (paged.chart_ids == fit.chart_ids).all()
+    assert paged.pages.shape == (len(faces),)
+    for page in range(paged.number_of_pages):
+        on_page = paged.pages == page
+        assert on_page.any()
+        assert atlas_problems(list(paged.uvs[on_page])) == []
+        assert len(numpy.unique(paged.pages[numpy.isin(paged.chart_ids, paged.chart_ids[on_page])])) == 1
+    # Written as UDIM tiles, read back by the independent checker.
+    disk_uv.save_obj(tmp_path / "pages.obj", paged)
+    _, uvs, obj_faces = read_obj(tmp_path / "pages.obj")
+    problems, tiles = udim_atlas_problems([uvs[t] for _, t in obj_faces], [t for _, t in obj_faces])
+    assert problems == [] and tiles == list(range(1001, 1001 + paged.number_of_pages))
+    # Pages with several meshes in one atlas.
+    several = disk_uv.atlas([(vertices, faces), mesh("eight.off")], texels_per_unit=density)
+    assert several[0].number_of_pages >= 2
+    with pytest.raises(ValueError, match=r"^at texels_per_unit .* need more than 1 pages .*max_pages"):
+        disk_uv.atlas(vertices, faces, texels_per_unit=density, max_pages=1)
+    with pytest.raises(ValueError, match=r"does not fit a page of 1024 texels \(resolution\)"):
+        disk_uv.atlas(vertices, faces, texels_per_unit=1e5, max_pages=10**9)
+    with pytest.raises(ValueError, match=r"^texels_per_unit must be"):
+        disk_uv.atlas(vertices, faces, texels_per_unit=-1.0)
+    with pytest.warns(RuntimeWarning, match=r"at texels_per_unit="):
+        disk_uv.atlas(vertices, faces, texels_per_unit=density / 10)
 
 
 def test_no_chart_spans_two_materials():

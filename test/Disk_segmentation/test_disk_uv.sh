@@ -6,6 +6,7 @@
 set -u
 tool=$1
 data=$2
+source=$(cd "$(dirname "$0")/../.." && pwd)  # the repository: its Python atlas checker
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
@@ -127,6 +128,42 @@ expect_error 1 "--material-ids: .*cannot open" "$data/elephant.off" --material-i
 "$tool" "$data/elephant.off" --resolution 32 -o "$work/small.obj" > /dev/null 2> "$work/err.txt"
 [ $? -eq 0 ] && grep -qE "warning: the charts cover only [0-9.]+% of the texture: at --resolution 32, --padding 2" \
   "$work/err.txt" && [ -s "$work/small.obj" ] && pass || fail "a sparse packing is not said: $(cat "$work/err.txt")"
+# A fixed texel density: twice the one-page fit needs several pages, written
+# as UDIM tiles: every corner of every face of chart c (the OBJ's group
+# chart_c) lies in the tile of the report's page of c, one picture per tile.
+# (That each page is a valid atlas is checked in test_packing.cpp and, on
+# the files, in test_module.py.)
+"$tool" "$data/elephant.off" --report "$work/fit.json" > /dev/null 2>&1
+density=$(python3 -c "import json; print(2 * json.load(open('$work/fit.json'))['packing']['texels_per_unit'])")
+"$tool" "$data/elephant.off" --texels-per-unit "$density" -o "$work/pages.obj" --atlas-png "$work/pages.png" \
+  --report "$work/pages.json" > "$work/out.txt" 2> "$work/err.txt"
+python3 -c "
+import json, math, os, sys
+p = json.load(open('$work/pages.json'))['packing']
+vt, chart, bad, tiles = [], None, 0, set()
+for line in open('$work/pages.obj'):
+    f = line.split()
+    if not f: continue
+    if f[0] == 'vt': vt.append((float(f[1]), float(f[2])))
+    elif f[0] == 'g': chart = int(f[1][len('chart_'):])
+    elif f[0] == 'f':
+        page = p['page_of_chart'][chart]
+        i, j = page % 10, page // 10
+        tiles.add(1001 + i + 10 * j)
+        corners = [vt[int(c.split('/')[1]) - 1] for c in f[1:]]
+        bad += sum(not (i <= u <= i + 1 and j <= v <= j + 1) for u, v in corners)
+pictures = sorted(f for f in os.listdir('$work') if f.startswith('pages.') and f.endswith('.png'))
+ok = (bad == 0 and p['pages'] >= 2 and p['udim_tiles'] and sorted(tiles) == list(range(1001, 1001 + p['pages']))
+      and abs(p['texels_per_unit'] - $density) < 1e-6 * $density and len(p['page_efficiency']) == p['pages']
+      and pictures == ['pages.%d.png' % t for t in sorted(tiles)])
+print(bad, sorted(tiles), pictures, p['pages']) if not ok else None
+sys.exit(0 if ok else 1)" && grep -q "pages at .* texels per unit, as UDIM tiles 1001 to" "$work/out.txt" \
+  && pass || fail "--texels-per-unit pages: $(cat "$work/err.txt")"
+expect_error 1 "patch #[0-9]+ is [0-9]+ x [0-9]+ texels and does not fit a page" "$data/elephant.off" \
+  --texels-per-unit 100000 --max-pages 1000000000
+expect_error 1 "need more than 2 pages .*--max-pages" "$data/elephant.off" --texels-per-unit "$density" --max-pages 2
+expect_error 1 "--texels-per-unit must be a finite number" "$data/elephant.off" --texels-per-unit -1
+expect_error 1 "--texels-per-unit needs --packer" "$data/elephant.off" --texels-per-unit 100 --packer grid
 # Several inputs, one atlas: each mesh keeps the charts it gets alone.
 "$tool" "$data/elephant.off" --patch-ids "$work/alone_a.txt" > /dev/null 2>&1
 "$tool" "$data/eight.off" --patch-ids "$work/alone_b.txt" > /dev/null 2>&1

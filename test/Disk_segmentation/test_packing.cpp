@@ -372,7 +372,25 @@ void check_packing(const Case& c, const std::vector<Point_2>& before, const DS::
     total_uv_area += a;
     area3[p] += 0.5 * norm3(cross3(sub(x[1], x[0]), sub(x[2], x[0])));
   }
-  EXPECT_NEAR(report.efficiency, total_uv_area, 1e-9 * std::max(1., total_uv_area));
+  // Each chart's page comes from the report; every page is a unit square of
+  // its own, used by some chart, and covered at most once.
+  ASSERT_EQ(report.page_of_chart.size(), P);
+  ASSERT_GE(report.number_of_pages, 1u);
+  std::vector<double> page_area(report.number_of_pages, 0.);
+  for(std::size_t p = 0; p < P; ++p)
+  {
+    ASSERT_LT(report.page_of_chart[p], report.number_of_pages);
+    page_area[report.page_of_chart[p]] += uv_area[p];
+  }
+  ASSERT_EQ(report.page_efficiency.size(), report.number_of_pages);
+  for(std::size_t k = 0; k < report.number_of_pages; ++k)
+  {
+    EXPECT_GT(page_area[k], 0.) << "page " << k << " holds no chart";
+    EXPECT_LE(page_area[k], 1.);
+    EXPECT_NEAR(report.page_efficiency[k], page_area[k], 1e-9);
+  }
+  const double pages = double(report.number_of_pages);
+  EXPECT_NEAR(report.efficiency, total_uv_area / pages, 1e-9 * std::max(1., total_uv_area));
   EXPECT_GT(report.efficiency, 0.);
   EXPECT_LE(report.efficiency, 1.);
 
@@ -436,6 +454,8 @@ void check_packing(const Case& c, const std::vector<Point_2>& before, const DS::
     EXPECT_LE(box[p].xmax, 1. - pad + eps); EXPECT_LE(box[p].ymax, 1. - pad + eps);
     for(std::size_t q = p + 1; q < P; ++q)
     {
+      if(report.page_of_chart[p] != report.page_of_chart[q])
+        continue;
       const double gap_x = std::max(box[q].xmin - box[p].xmax, box[p].xmin - box[q].xmax);
       const double gap_y = std::max(box[q].ymin - box[p].ymax, box[p].ymin - box[q].ymax);
       if(std::max(gap_x, gap_y) >= pad - eps)
@@ -460,7 +480,7 @@ void check_packing(const Case& c, const std::vector<Point_2>& before, const DS::
 }
 
 DS::Packing_report pack_and_check(Case& c, DS::Packing_method method, unsigned resolution = 1024,
-                                  double padding = 2.)
+                                  double padding = 2., double texels_per_unit = 0.)
 {
   const std::vector<Point_2> before = snapshot(c);
   for(face_descriptor f : faces(c.mesh))
@@ -472,7 +492,8 @@ DS::Packing_report pack_and_check(Case& c, DS::Packing_method method, unsigned r
   }
   const DS::Packing_report report =
     DS::pack_patches(c.mesh, c.patch, c.uv,
-                     DS::parameters::packing_method(method).texture_resolution(resolution).padding_in_texels(padding));
+                     DS::parameters::packing_method(method).texture_resolution(resolution).padding_in_texels(padding)
+                       .texels_per_unit(texels_per_unit));
   check_packing(c, before, report, method, double(resolution), padding);
   return report;
 }
@@ -718,6 +739,81 @@ TEST(Packing, BadParametersThrow)
     EXPECT_NE(std::string(e.what()).find("texture_resolution"), std::string::npos);
   }
   EXPECT_TRUE(unchanged());
+}
+
+TEST(Packing, FixedTexelDensitySpreadsTheChartsOverPages)
+{
+  std::vector<int> cuts;
+  for(int x = 0; x <= 12; ++x) cuts.push_back(x);
+  cuts.push_back(17);
+  cuts.push_back(25);
+  cuts.push_back(36);
+  Case fit = grid_case(cuts, cuts);
+  const DS::Packing_report one_page = pack_and_check(fit, DS::Packing_method::TIGHT, 512, 2.);
+  EXPECT_EQ(one_page.number_of_pages, 1u);
+
+  // Twice the density of the one-page fit: four times the area, so at least
+  // as many pages as the area needs (charts never cover a page whole).
+  Case paged = grid_case(cuts, cuts);
+  const double density = 2. * one_page.texels_per_unit;
+  const DS::Packing_report r = pack_and_check(paged, DS::Packing_method::TIGHT, 512, 2., density);
+  EXPECT_NEAR(r.texels_per_unit, density, 1e-9 * density);
+  const double area_in_pages = 4. * one_page.efficiency;
+  EXPECT_GE(double(r.number_of_pages), std::ceil(area_in_pages - 1e-9));
+  EXPECT_GT(r.number_of_pages, 1u);
+  std::cout << "[ mixed grid, " << paged.number_of_patches << " charts ] one page " << one_page.efficiency
+            << " at " << one_page.texels_per_unit << " texels per unit; at twice that " << r.number_of_pages
+            << " pages, mean " << r.efficiency << std::endl;
+
+  // Half the density: one page, a quarter of the area.
+  Case sparse = grid_case(cuts, cuts);
+  const DS::Packing_report half =
+    pack_and_check(sparse, DS::Packing_method::TIGHT, 512, 2., 0.5 * one_page.texels_per_unit);
+  EXPECT_EQ(half.number_of_pages, 1u);
+  EXPECT_NEAR(half.efficiency, 0.25 * one_page.efficiency, 1e-9);
+
+  // The same pages and UVs on any number of threads.
+  Case again = grid_case(cuts, cuts);
+  const DS::Packing_report sequential = DS::pack_patches(
+    again.mesh, again.patch, again.uv,
+    DS::parameters::texture_resolution(512u).padding_in_texels(2.).texels_per_unit(density).number_of_threads(1u));
+  EXPECT_EQ(sequential.page_of_chart, r.page_of_chart);
+  EXPECT_TRUE(snapshot(again) == snapshot(paged));
+}
+
+TEST(Packing, FixedTexelDensityThatCannotBePackedThrowsAndWritesNothing)
+{
+  Case c = disk_case();
+  const std::vector<Point_2> before = snapshot(c);
+  auto message_of = [&](const auto& np) {
+    try
+    {
+      DS::pack_patches(c.mesh, c.patch, c.uv, np);
+    }
+    catch(const DS::Input_error& e)
+    {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  Case fresh = disk_case();
+  const double fit_density = DS::pack_patches(fresh.mesh, fresh.patch, fresh.uv).texels_per_unit;
+  // Far above the fit: the largest chart alone is larger than a page.
+  std::string m = message_of(DS::parameters::texels_per_unit(1e3 * fit_density).max_number_of_pages(1000000u));
+  EXPECT_NE(m.find("does not fit a page"), std::string::npos) << m;
+  EXPECT_NE(m.find("texels_per_unit"), std::string::npos) << m;
+  // More pages than allowed.
+  m = message_of(DS::parameters::texels_per_unit(3. * fit_density).max_number_of_pages(2u));
+  EXPECT_NE(m.find("max_number_of_pages"), std::string::npos) << m;
+  m = message_of(DS::parameters::texels_per_unit(-1.));
+  EXPECT_NE(m.find("texels_per_unit"), std::string::npos) << m;
+  m = message_of(DS::parameters::texels_per_unit(std::numeric_limits<double>::quiet_NaN()));
+  EXPECT_NE(m.find("texels_per_unit"), std::string::npos) << m;
+  m = message_of(DS::parameters::texels_per_unit(fit_density).packing_method(DS::Packing_method::GRID));
+  EXPECT_NE(m.find("TIGHT"), std::string::npos) << m;
+  m = message_of(DS::parameters::texels_per_unit(fit_density).max_number_of_pages(0u));
+  EXPECT_NE(m.find("max_number_of_pages"), std::string::npos) << m;
+  EXPECT_TRUE(snapshot(c) == before) << "a packing that threw moved the UVs";
 }
 
 TEST(Packing, NonTriangleFaceThrows)

@@ -30,6 +30,7 @@
 #include <cstddef>
 #include <iterator>
 #include <limits>
+#include <numeric>
 #include <sstream>
 #include <string>
 #include <type_traits>
@@ -58,12 +59,21 @@ struct Packing_report
 {
   /// Number of charts (patches) placed.
   std::size_t number_of_charts = 0;
-  /// Sum of the UV areas of all faces after packing, i.e. the covered
-  /// fraction of the unit square (in `[0, 1]`).
+  /// Sum of the UV areas of all faces after packing over the number of
+  /// pages, i.e. the covered fraction of a page, on the mean (in `[0, 1]`).
   double efficiency = 0;
   /// `Packing_method::TIGHT`: texels of the target texture per unit of 3D
-  /// length, the same for all charts. `Packing_method::GRID`: 0.
+  /// length, the same for all charts (the `texels_per_unit` parameter when
+  /// it is given). `Packing_method::GRID`: 0.
   double texels_per_unit = 0;
+  /// Number of pages (textures of `texture_resolution` texels) the charts
+  /// fill: 1 unless `texels_per_unit` is given.
+  std::size_t number_of_pages = 0;
+  /// The page of every chart (patch id), in `[0, number_of_pages)`; each
+  /// chart lies whole in the unit square of its page.
+  std::vector<std::size_t> page_of_chart;
+  /// Per page, the covered fraction of its square.
+  std::vector<double> page_efficiency;
 };
 
 namespace internal {
@@ -73,6 +83,10 @@ struct Packing_settings
   Packing_method method;
   double resolution;
   double padding;  // in texels
+  // Fixed texel density, charts spread over pages; 0: the largest common
+  // scale that fits all charts on one page.
+  double texels_per_unit = 0.;
+  std::size_t max_pages = 1;
   unsigned int threads;  // 0: TBB's choice
   // Told of every trial layout, so that a cancellation stops a long
   // packing between two trials (it throws Cancelled); none if null.
@@ -89,6 +103,10 @@ inline void report_packing_trial(const Packing_settings& s, std::size_t& trial)
   if(s.progress != nullptr)
     (*s.progress)("packing", (std::min)(++trial, reported_packing_trials - 1), reported_packing_trials);
 }
+
+// Pages are packed one after the other, each trying every chart left: the
+// cap keeps that linear in the charts whatever texels_per_unit is given.
+constexpr std::size_t default_max_pages = 64;
 
 template <typename NamedParameters>
 Packing_settings packing_settings(const NamedParameters& np)
@@ -116,6 +134,20 @@ Packing_settings packing_settings(const NamedParameters& np)
   if(!(2. * s.padding < s.resolution))
     throw Input_error("pack_patches: padding_in_texels leaves no room: twice the padding must be "
                       "less than texture_resolution");
+  s.texels_per_unit = static_cast<double>(
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::texels_per_unit), 0.));
+  if(!(s.texels_per_unit >= 0.) || !std::isfinite(s.texels_per_unit))
+    throw Input_error("pack_patches: texels_per_unit must be a finite number >= 0 (0: fit one page)");
+  if(s.texels_per_unit > 0. && s.method != Packing_method::TIGHT)
+    throw Input_error("pack_patches: texels_per_unit needs packing_method TIGHT (the grid scales every chart to "
+                      "its cell)");
+  s.max_pages = count_parameter(
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::max_number_of_pages), default_max_pages),
+    "max_number_of_pages");
+  if(s.max_pages == 0)
+    throw Input_error("pack_patches: max_number_of_pages must be at least 1");
+  if(s.texels_per_unit == 0.)
+    s.max_pages = 1;
   s.threads = number_of_threads_parameter(np);
   return s;
 }
@@ -144,13 +176,15 @@ inline double packing_capacity(const Packing_settings& s)
 // work that would have found it out.
 inline void check_packing_capacity(const Packing_settings& s, std::size_t number_of_charts)
 {
-  const double capacity = packing_capacity(s);
+  const double capacity = packing_capacity(s) * static_cast<double>(s.max_pages);
   if(static_cast<double>(number_of_charts) <= capacity)
     return;
   std::ostringstream message;
   message << "pack_patches: padding_in_texels (" << s.padding << ") is too large to place " << number_of_charts
           << " charts on a texture of " << s.resolution << " texels (texture_resolution): it leaves room for "
           << static_cast<std::size_t>(capacity) << " at most";
+  if(s.max_pages > 1)
+    message << " on " << s.max_pages << " pages (max_number_of_pages)";
   throw Input_error(message.str());
 }
 
@@ -400,6 +434,99 @@ void frame_charts(Packing_method method, unsigned int threads, Chart_set<Triangl
   }
 }
 
+// Cells of at least one texel, at most 512 across: each trial costs the
+// columns times the charts' widths in cells.
+// Measured on 10 meshes of CGAL's data: 256 columns pack 0.551 of the
+// square (median), 512 0.594, 1024 0.588 at 2.4 times the time of 512.
+inline std::size_t shape_columns(const Packing_settings& s)
+{
+  return (std::min)(std::size_t(512), static_cast<std::size_t>(s.resolution));
+}
+
+// The padding in whole cells, rounded up.
+inline std::size_t shape_pad_cells(const Packing_settings& s, std::size_t columns)
+{
+  return (std::max)(std::size_t(1), static_cast<std::size_t>(std::ceil(s.padding * double(columns) / s.resolution)));
+}
+
+// The charts as the shape packers read them. Not copyable: `charts` points
+// into the other members.
+struct Shape_input
+{
+  std::vector<Packing_point> framed;  // corners in the chart's frame
+  std::vector<unsigned char> border_edges;
+  std::vector<Profile_chart> charts;
+  double total_area = 0.;  // of the charts at one UV unit per unit of length
+
+  template <typename TriangleMesh>
+  Shape_input(const Chart_set<TriangleMesh>& set, const std::vector<double>& density)
+  {
+    const std::size_t n = set.size();
+    framed.reserve(set.corners.size());
+    border_edges.reserve(set.corners.size() / 3);
+    charts.resize(n);
+    std::vector<std::size_t> first_corner(1, 0);  // of each chart in `framed`, and the end
+    for(std::size_t p = 0; p < n; ++p)
+    {
+      // Only the triangles with an edge on the border: a chart's lowest and
+      // highest point over any vertical slab lie on its border, and its
+      // border bounds the cells it covers (about the square root of the
+      // chart's triangles).
+      for(std::size_t i = set.first_face[p]; i < set.first_face[p + 1]; ++i)
+      {
+        if(set.border_edges[i] == 0)
+          continue;
+        for(std::size_t j = 0; j < 3; ++j)
+          framed.push_back(set.rotation[p](set.corners[3 * i + j]));
+        border_edges.push_back(set.border_edges[i]);
+      }
+      first_corner.push_back(framed.size());
+      charts[p].density = density[p];
+      charts[p].area = set.uv_area[p];
+      total_area += density[p] * density[p] * set.uv_area[p];
+    }
+    for(std::size_t p = 0; p < n; ++p)
+    {
+      charts[p].corners = framed.data() + first_corner[p];
+      charts[p].border_edges = border_edges.data() + first_corner[p] / 3;
+      charts[p].number_of_corners = first_corner[p + 1] - first_corner[p];
+    }
+  }
+  Shape_input(const Shape_input&) = delete;
+  Shape_input& operator=(const Shape_input&) = delete;
+};
+
+// The similarities of the charts placed by a shape packer at `scale`.
+template <typename TriangleMesh>
+std::vector<Chart_similarity> shape_similarities(const Chart_set<TriangleMesh>& charts,
+                                                 const std::vector<Profile_placement>& placement,
+                                                 const std::vector<double>& density, double scale)
+{
+  std::vector<Chart_similarity> result(charts.size());
+  for(std::size_t p = 0; p < charts.size(); ++p)
+  {
+    Chart_similarity& sim = result[p];
+    sim.rotation = charts.rotation[p];
+    Packing_box b = charts.box[p];
+    for(int t = 0; t < placement[p].turns; ++t)
+    {
+      sim.rotation = sim.rotation.quarter_turned();
+      b = b.quarter_turned();
+    }
+    if(placement[p].diagonal)
+    {
+      sim.rotation = sim.rotation.eighth_turned();
+      b = Packing_box();
+      for(std::size_t k = 3 * charts.first_face[p]; k < 3 * charts.first_face[p + 1]; ++k)
+        b.add(sim.rotation(charts.corners[k]));
+    }
+    sim.scale = scale * density[p];
+    sim.tx = placement[p].x - sim.scale * b.xmin;
+    sim.ty = placement[p].y - sim.scale * b.ymin;
+  }
+  return result;
+}
+
 // Above this many charts only the raster packer runs; its search starts at
 // this multiple of the rectangles' scale (see shape_layout()).
 constexpr std::size_t profile_packer_max_charts = 64;
@@ -414,45 +541,11 @@ std::vector<Chart_similarity> shape_layout(const Chart_set<TriangleMesh>& charts
                                              double& global_scale)
 {
   const std::size_t n = charts.size();
-  // Cells of at least one texel, at most 512 across: each trial costs the
-  // columns times the charts' widths in cells.
-  // Measured on 10 meshes of CGAL's data: 256 columns pack 0.551 of the
-  // square (median), 512 0.594, 1024 0.588 at 2.4 times the time of 512.
-  const std::size_t columns = (std::min)(std::size_t(512), static_cast<std::size_t>(s.resolution));
-  const std::size_t pad_cells =
-    (std::max)(std::size_t(1), static_cast<std::size_t>(std::ceil(s.padding * double(columns) / s.resolution)));
-  std::vector<Packing_point> framed;
-  framed.reserve(charts.corners.size());
-  std::vector<unsigned char> border_edges;
-  border_edges.reserve(charts.corners.size() / 3);
-  std::vector<Profile_chart> input(n);
-  std::vector<std::size_t> first_corner(1, 0);  // of each chart in `framed`, and the end
-  double total = 0.;
-  for(std::size_t p = 0; p < n; ++p)
-  {
-    // Only the triangles with an edge on the border: a chart's lowest and
-    // highest point over any vertical slab lie on its border, and its
-    // border bounds the cells it covers (about the square root of the
-    // chart's triangles).
-    for(std::size_t i = charts.first_face[p]; i < charts.first_face[p + 1]; ++i)
-    {
-      if(charts.border_edges[i] == 0)
-        continue;
-      for(std::size_t j = 0; j < 3; ++j)
-        framed.push_back(charts.rotation[p](charts.corners[3 * i + j]));
-      border_edges.push_back(charts.border_edges[i]);
-    }
-    first_corner.push_back(framed.size());
-    input[p].density = density[p];
-    input[p].area = charts.uv_area[p];
-    total += density[p] * density[p] * charts.uv_area[p];
-  }
-  for(std::size_t p = 0; p < n; ++p)
-  {
-    input[p].corners = framed.data() + first_corner[p];
-    input[p].border_edges = border_edges.data() + first_corner[p] / 3;
-    input[p].number_of_corners = first_corner[p + 1] - first_corner[p];
-  }
+  const std::size_t columns = shape_columns(s);
+  const std::size_t pad_cells = shape_pad_cells(s, columns);
+  const Shape_input shapes(charts, density);
+  const std::vector<Profile_chart>& input = shapes.charts;
+  const double total = shapes.total_area;
   const double hi = total > 0. ? 1. / std::sqrt(total) : rectangle_scale;
   std::size_t trial = 0;  // reported, after the rectangles' (see report_packing_trial())
 
@@ -554,38 +647,83 @@ std::vector<Chart_similarity> shape_layout(const Chart_set<TriangleMesh>& charts
   if(!(lo > rectangle_scale * (1. + 1e-3)))
     return std::vector<Chart_similarity>();
   global_scale = lo;
-  std::vector<Chart_similarity> result(n);
-  for(std::size_t p = 0; p < n; ++p)
-  {
-    Chart_similarity& sim = result[p];
-    sim.rotation = charts.rotation[p];
-    Packing_box b = charts.box[p];
-    for(int t = 0; t < best[p].turns; ++t)
-    {
-      sim.rotation = sim.rotation.quarter_turned();
-      b = b.quarter_turned();
-    }
-    if(best[p].diagonal)
-    {
-      sim.rotation = sim.rotation.eighth_turned();
-      b = Packing_box();
-      for(std::size_t k = 3 * charts.first_face[p]; k < 3 * charts.first_face[p + 1]; ++k)
-        b.add(sim.rotation(charts.corners[k]));
-    }
-    sim.scale = lo * density[p];
-    sim.tx = best[p].x - sim.scale * b.xmin;
-    sim.ty = best[p].y - sim.scale * b.ymin;
-  }
-  return result;
+  return shape_similarities(charts, best, density, lo);
 }
 
 // Extra gap, in UV units, on top of the requested padding, that absorbs the
 // rounding of the final similarity (coordinates are at most 1).
 constexpr double packing_rounding_margin = 1e-12;
 
+// The layout at the fixed density `s.texels_per_unit`: pages are filled
+// one after the other by the raster packer, each with the charts left that
+// fit on it, largest first; `page_of_chart` says where each went.
+template <typename TriangleMesh>
+std::vector<Chart_similarity> paged_layout(const Chart_set<TriangleMesh>& charts, const Packing_settings& s,
+                                           const std::vector<double>& density, double& global_scale,
+                                           std::vector<std::size_t>& page_of_chart)
+{
+  const std::size_t n = charts.size();
+  // Texels per unit of the input's length = scale * resolution * length_scale.
+  const double scale = s.texels_per_unit / (s.resolution * charts.length_scale);
+  global_scale = scale;
+  const Shape_input shapes(charts, density);
+  // Pages never hold more than their area: a quick "no" before any packing.
+  const double least_pages = shapes.total_area * scale * scale;
+  auto too_many_pages = [&] {
+    std::ostringstream message;
+    message << "pack_patches: at texels_per_unit " << s.texels_per_unit << " the charts need more than "
+            << s.max_pages << " pages of " << s.resolution << " texels (max_number_of_pages); lower "
+            << "texels_per_unit or raise texture_resolution or max_number_of_pages";
+    return Input_error(message.str());
+  };
+  if(!(least_pages <= static_cast<double>(s.max_pages)))
+    throw too_many_pages();
+
+  const std::size_t columns = shape_columns(s);
+  Raster_packer packer(columns, shape_pad_cells(s, columns));
+  packer.set_parallel(s.threads != 1);
+  std::vector<Profile_placement> placement(n), on_page;
+  std::vector<bool> placed;
+  std::vector<std::size_t> left = largest_first(shapes.charts), still_left;
+  page_of_chart.assign(n, 0);
+  std::size_t trial = 0;
+  for(std::size_t page = 0; !left.empty(); ++page)
+  {
+    if(page == s.max_pages)
+      throw too_many_pages();
+    report_packing_trial(s, trial);
+    std::size_t count = 0;
+    within_arena(s.threads, [&] { count = packer.fill_page(shapes.charts, left, scale, on_page, placed); });
+    if(count == 0)
+    {
+      // None of them fits an empty page: the largest is named.
+      const std::size_t p = left.front();
+      const double to_texels = scale * density[p] * s.resolution;
+      std::ostringstream message;
+      message << "pack_patches: at texels_per_unit " << s.texels_per_unit << ", " << patch_name(p) << " is "
+              << std::ceil(charts.box[p].width() * to_texels) << " x "
+              << std::ceil(charts.box[p].height() * to_texels) << " texels and does not fit a page of "
+              << s.resolution << " texels (texture_resolution) with padding_in_texels " << s.padding
+              << "; lower texels_per_unit or raise texture_resolution";
+      throw Input_error(message.str());
+    }
+    still_left.clear();
+    for(std::size_t i : left)
+      if(placed[i])
+      {
+        placement[i] = on_page[i];
+        page_of_chart[i] = page;
+      }
+      else
+        still_left.push_back(i);
+    left.swap(still_left);
+  }
+  return shape_similarities(charts, placement, density, scale);
+}
+
 template <typename TriangleMesh>
 std::vector<Chart_similarity> tight_layout(const Chart_set<TriangleMesh>& charts, const Packing_settings& s,
-                                           double& global_scale)
+                                           double& global_scale, std::vector<std::size_t>& page_of_chart)
 {
   const std::size_t n = charts.size();
   const double pad = s.padding / s.resolution + packing_rounding_margin;
@@ -597,6 +735,9 @@ std::vector<Chart_similarity> tight_layout(const Chart_set<TriangleMesh>& charts
     w[p] = density[p] * charts.box[p].width();
     h[p] = density[p] * charts.box[p].height();
   }
+  if(s.texels_per_unit > 0.)
+    return paged_layout(charts, s, density, global_scale, page_of_chart);
+  page_of_chart.assign(n, 0);
   // Rectangles grown by the padding on their right and top fill [pad, 1]^2:
   // this leaves the padding between any two of them and along every side.
   const Square_packing packing = pack_in_square(w, h, pad, 1. - pad);
@@ -675,17 +816,15 @@ std::vector<Chart_similarity> grid_layout(const Chart_set<TriangleMesh>& charts,
 
 namespace internal {
 
-// pack_patches() on maps of the right key types.
-// `progress` is told of every trial layout (see report_packing_trial()).
+// pack_patches() on maps of the right key types, with checked settings;
+// `np` only says where the coordinates are.
 template <typename TriangleMesh, typename FacePatchMap, typename UVMap, typename NamedParameters>
 Packing_report pack_checked_patches(const TriangleMesh& tm, FacePatchMap face_patch_map, UVMap uv_map,
-                                    const NamedParameters& np, Progress* progress = nullptr)
+                                    const Packing_settings& settings, const NamedParameters& np)
 {
   typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
   typedef typename boost::property_traits<UVMap>::value_type UV_point;
 
-  Packing_settings settings = packing_settings(np);
-  settings.progress = progress;
   Packing_report report;
   if(faces(tm).empty())
     return report;
@@ -697,8 +836,9 @@ Packing_report pack_checked_patches(const TriangleMesh& tm, FacePatchMap face_pa
   frame_charts(settings.method, settings.threads, charts);
 
   double global_scale = 0.;
+  std::vector<std::size_t> page_of_chart(charts.size(), 0);
   const std::vector<Chart_similarity> placement =
-    tight ? tight_layout(charts, settings, global_scale) : grid_layout(charts, settings);
+    tight ? tight_layout(charts, settings, global_scale, page_of_chart) : grid_layout(charts, settings);
 
   // Every halfedge of a face is written once, so nothing is moved twice.
   for(std::size_t i = 0; i < charts.faces.size(); ++i)
@@ -712,8 +852,13 @@ Packing_report pack_checked_patches(const TriangleMesh& tm, FacePatchMap face_pa
       put(uv_map, h, UV_point(sim.scale * q.x + sim.tx, sim.scale * q.y + sim.ty));
     }
   }
+  report.number_of_pages = charts.size() == 0 ? 1 : *std::max_element(page_of_chart.begin(), page_of_chart.end()) + 1;
+  report.page_efficiency.assign(report.number_of_pages, 0.);
   for(std::size_t p = 0; p < charts.size(); ++p)
-    report.efficiency += placement[p].scale * placement[p].scale * charts.uv_area[p];
+    report.page_efficiency[page_of_chart[p]] += placement[p].scale * placement[p].scale * charts.uv_area[p];
+  for(double e : report.page_efficiency)
+    report.efficiency += e / static_cast<double>(report.number_of_pages);
+  report.page_of_chart = std::move(page_of_chart);
   report.number_of_charts = charts.size();
   // Texels per unit of the input's length, not of the scaled one.
   report.texels_per_unit = tight ? global_scale * settings.resolution * charts.length_scale : 0.;
@@ -767,6 +912,15 @@ Packing_report pack_checked_patches(const TriangleMesh& tm, FacePatchMap face_pa
 /// `number_of_threads` other than 1, the orientations of a chart are
 /// profiled or rasterized and searched side by side; the layout is the same
 /// for any number of threads.
+///
+/// With `texels_per_unit` given (`TIGHT` only, not in the paper), the scale
+/// is not searched: every chart gets that texel density, and pages are
+/// filled one after the other by the raster packer, each with the charts
+/// left that fit on it, largest first (the xatlas and UVAtlas "atlas
+/// count"). Each chart lies whole in the unit square of its page;
+/// `Packing_report::page_of_chart` says which page that is. A chart that
+/// does not fit an empty page, or more pages than `max_number_of_pages`,
+/// throws `Input_error` naming the chart's size in texels.
 ///
 /// With `Packing_method::GRID` (the paper's packer), chart `i` goes to cell
 /// `i` of a `ceil(sqrt(P)) x ceil(sqrt(P))` grid of equal square cells, row by
@@ -826,6 +980,20 @@ Packing_report pack_checked_patches(const TriangleMesh& tm, FacePatchMap face_pa
 ///     \cgalParamDefault{`2`}
 ///     \cgalParamExtra{must be finite, >= 0 and less than half of `texture_resolution`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{texels_per_unit}
+///     \cgalParamDescription{`TIGHT` only: texels of the target texture per unit of 3D length, fixed. The charts
+///       are then spread over as many pages (textures of `texture_resolution` texels, each the unit square of
+///       its own UVs) as they need; 0: the largest density that fits all charts on one page}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`0`}
+///     \cgalParamExtra{must be finite and >= 0}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{max_number_of_pages}
+///     \cgalParamDescription{most pages a fixed `texels_per_unit` may fill; more throws `Input_error`}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{`64`}
+///     \cgalParamExtra{must be at least 1}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_threads}
 ///     \cgalParamDescription{maximum number of threads of the `TIGHT` packing (0: TBB's choice; 1: sequential). Without TBB, sequential.}
 ///     \cgalParamType{`unsigned int`}
@@ -856,7 +1024,9 @@ Packing_report pack_checked_patches(const TriangleMesh& tm, FacePatchMap face_pa
 ///         triangle, a patch id is out of range or a patch has no face, a
 ///         patch has a zero, negative or non-finite UV area (or, for `TIGHT`,
 ///         a non-finite 3D area), or the padding leaves no room for all
-///         charts. `uv_map` is not written then. A `TIGHT` chart whose 3D area
+///         charts, or (with `texels_per_unit`) a chart is larger than a page or
+///         the charts need more than `max_number_of_pages` pages. `uv_map` is
+///         not written then. A `TIGHT` chart whose 3D area
 ///         is zero (degenerate faces) or below a millionth of the mean chart
 ///         area is not an error: it is given the size of a chart of a
 ///         millionth of the mean chart area.
@@ -870,8 +1040,10 @@ Packing_report pack_patches(const TriangleMesh& tm,
   static_assert(internal::Check_patch_map<FacePatchMap>::value, "");
   static_assert(internal::Check_named_parameters<NamedParameters>::value, "");
   internal::Progress progress = internal::Progress::from(np);
+  internal::Packing_settings settings = internal::packing_settings(np);
+  settings.progress = &progress;
   return internal::pack_checked_patches(tm, internal::checked_patch_map<TriangleMesh>(face_patch_map),
-                                        internal::checked_uv_map<TriangleMesh>(uv_map), np, &progress);
+                                        internal::checked_uv_map<TriangleMesh>(uv_map), settings, np);
 }
 
 } // namespace Disk_segmentation

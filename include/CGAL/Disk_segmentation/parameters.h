@@ -34,6 +34,8 @@ enum use_fallback_t { use_fallback };
 enum packing_method_t { packing_method };
 enum texture_resolution_t { texture_resolution };
 enum padding_in_texels_t { padding_in_texels };
+enum texels_per_unit_t { texels_per_unit };
+enum max_number_of_pages_t { max_number_of_pages };
 enum number_of_threads_t { number_of_threads };
 enum progress_callback_t { progress_callback };
 enum require_disk_patches_t { require_disk_patches };
@@ -99,6 +101,8 @@ struct Named_function_parameters
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(packing_method_t, packing_method)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(texture_resolution_t, texture_resolution)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(padding_in_texels_t, padding_in_texels)
+  CGAL_DISK_SEGMENTATION_ADD_PARAMETER(texels_per_unit_t, texels_per_unit)
+  CGAL_DISK_SEGMENTATION_ADD_PARAMETER(max_number_of_pages_t, max_number_of_pages)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(number_of_threads_t, number_of_threads)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(progress_callback_t, progress_callback)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(require_disk_patches_t, require_disk_patches)
@@ -180,6 +184,13 @@ CGAL_DISK_SEGMENTATION_ADD_PARAMETER(texture_resolution_t, texture_resolution)
 /// \ingroup PkgDiskSegmentationRef
 /// Gap kept around every chart, in texels of the target texture (`double`).
 CGAL_DISK_SEGMENTATION_ADD_PARAMETER(padding_in_texels_t, padding_in_texels)
+/// \ingroup PkgDiskSegmentationRef
+/// Texels of the target texture per unit of 3D length (`double`); 0: the
+/// largest that fits the charts on one page.
+CGAL_DISK_SEGMENTATION_ADD_PARAMETER(texels_per_unit_t, texels_per_unit)
+/// \ingroup PkgDiskSegmentationRef
+/// Most pages (textures) a fixed `texels_per_unit` may fill (`std::size_t`).
+CGAL_DISK_SEGMENTATION_ADD_PARAMETER(max_number_of_pages_t, max_number_of_pages)
 /// \ingroup PkgDiskSegmentationRef
 /// Maximum number of threads; 0 lets TBB decide (`unsigned int`).
 CGAL_DISK_SEGMENTATION_ADD_PARAMETER(number_of_threads_t, number_of_threads)

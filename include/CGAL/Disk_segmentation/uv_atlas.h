@@ -272,7 +272,9 @@ Atlas_report uv_atlas(const TriangleMesh& tm, UVMap uv_map, const NamedParameter
   progress("packing", 0, 1);
   CGAL::Real_timer timer;
   timer.start();
-  report.packing = internal::pack_checked_patches(tm, face_patch_map, staged_uv, np, &progress);
+  internal::Packing_settings packing = internal::packing_settings(np);
+  packing.progress = &progress;
+  report.packing = internal::pack_checked_patches(tm, face_patch_map, staged_uv, packing, np);
   report.packing_seconds = timer.time();
   progress("packing", 1, 1);
 

@@ -98,8 +98,9 @@ Multi_mesh_atlas_report uv_atlas_of_meshes(const std::vector<const TriangleMesh*
     if(meshes[i] == nullptr)
       throw Input_error("uv_atlas_of_meshes: mesh #" + std::to_string(i) + " is null");
   check_uv_atlas_parameters(np);
-  const internal::Packing_settings packing = internal::packing_settings(np);
+  internal::Packing_settings packing = internal::packing_settings(np);
   internal::Progress progress = internal::Progress::from(np);
+  packing.progress = &progress;
 
   // Each mesh alone, into maps of its own.
   Multi_mesh_atlas_report report;
@@ -154,11 +155,7 @@ Multi_mesh_atlas_report uv_atlas_of_meshes(const std::vector<const TriangleMesh*
       if(!is_border(h.first, *meshes[i]))
         all_uv[h.second] = get(staged_uvs[i], h.first);
   }
-  report.packing = internal::pack_checked_patches(
-    all, all_patch, all_uv,
-    parameters::packing_method(packing.method).texture_resolution(static_cast<unsigned int>(packing.resolution))
-      .padding_in_texels(packing.padding).number_of_threads(packing.threads),
-    &progress);
+  report.packing = internal::pack_checked_patches(all, all_patch, all_uv, packing, parameters::default_values());
   report.packing_seconds = timer.time();
   progress("packing", 1, 1);
 

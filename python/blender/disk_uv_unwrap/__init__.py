@@ -110,6 +110,10 @@ class UV_OT_disk_uv_unwrap(bpy.types.Operator):
                           default=2.0, min=0.0, soft_max=16.0)
     resolution: IntProperty(name="Resolution", description="Texture side in texels the margin refers to",
                             default=1024, min=16, max=65536)
+    texel_density: FloatProperty(
+        name="Texel density", description="Texels per unit of length, fixed: the charts fill as many UDIM tiles of "
+                                          "Resolution texels as they need (0: the largest that fits one tile)",
+        default=0.0, min=0.0, soft_max=4096.0)
 
     @classmethod
     def poll(cls, context):
@@ -133,7 +137,7 @@ class UV_OT_disk_uv_unwrap(bpy.types.Operator):
         active = context.view_layer.objects.active
         if mode == "EDIT_MESH":
             bpy.ops.object.mode_set(mode="OBJECT")  # writes the edit-mode mesh to obj.data
-        done, failed, warned = 0, [], []
+        done, failed, warned, tiles = 0, [], [], []
         try:
             for obj in objects:
                 vertices, triangles, loops, polygons = mesh_arrays(obj, selected_only=(mode == "EDIT_MESH"))
@@ -152,14 +156,18 @@ class UV_OT_disk_uv_unwrap(bpy.types.Operator):
                                               max_angle_distortion=self.max_angle_distortion,
                                               padding=self.margin, resolution=self.resolution,
                                               max_charts=self.max_charts or None, face_groups=polygons,
-                                              materials=materials)
+                                              materials=materials, texels_per_unit=self.texel_density)
                 except ValueError as error:
-                    failed.append("%s: %s" % (obj.name, error))
+                    failed.append("%s: %s" % (obj.name, str(error).replace("texels_per_unit", "texel density")))
                     continue
                 for warning in caught:
                     # The module names its keyword; the panel calls the padding "Margin".
-                    warned.append("%s: %s" % (obj.name, str(warning.message).replace("padding", "margin")))
-                write_uvs(obj.data, loops, atlas.uvs)
+                    message = str(warning.message).replace("padding", "margin")
+                    warned.append("%s: %s" % (obj.name, message.replace("texels_per_unit", "texel density")))
+                # Several pages go to UDIM tiles 1001, 1002, ..., as Blender's tiled images read them.
+                write_uvs(obj.data, loops, atlas.udim_uvs() if atlas.number_of_pages > 1 else atlas.uvs)
+                if atlas.number_of_pages > 1:
+                    tiles.append("%s: %d UDIM tiles" % (obj.name, atlas.number_of_pages))
                 done += 1
         finally:
             if mode == "EDIT_MESH":
@@ -170,7 +178,7 @@ class UV_OT_disk_uv_unwrap(bpy.types.Operator):
         if done == 0:
             self.report({"ERROR"}, "no mesh unwrapped")
             return {"CANCELLED"}
-        self.report({"INFO"}, "Disk UV Unwrap: %d mesh(es) unwrapped" % done)
+        self.report({"INFO"}, "Disk UV Unwrap: %d mesh(es) unwrapped%s" % (done, "".join("; " + t for t in tiles)))
         return {"FINISHED"}
 
 

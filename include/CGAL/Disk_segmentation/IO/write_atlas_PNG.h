@@ -88,14 +88,19 @@ constexpr unsigned int max_atlas_png_resolution = 16384;
 ///
 /// @tparam TriangleMesh, FacePatchMap, UVMap as in `write_atlas_OBJ()`
 ///
-/// @throws Input_error if `resolution` is 0 or above `max_atlas_png_resolution`
+/// @throws Input_error if `resolution` is 0 or above `max_atlas_png_resolution`, or `tile` is below 1001
 /// @throws std::runtime_error if stb or the stream fails
+///
+/// With `tile` (a UDIM tile number, `1001 + i + 10 j` for the square
+/// \f$ [i, i+1] \times [j, j+1] \f$, `0 <= i < 10`), only the faces whose
+/// UV centroid lies in that square are drawn, moved to \f$ [0,1]^2 \f$: one
+/// picture per page of an atlas whose pages are laid out as UDIM tiles.
 ///
 /// Complexity: \f$ O(F + R^2) \f$ time and \f$ O(R^2) \f$ memory for `F`
 /// faces and resolution `R`.
 template <typename TriangleMesh, typename FacePatchMap, typename UVMap>
 void write_atlas_PNG(std::ostream& out, const TriangleMesh& mesh, FacePatchMap patch, UVMap uv,
-                     unsigned int resolution)
+                     unsigned int resolution, unsigned int tile = 1001)
 {
   static_assert(CGAL::Disk_segmentation::internal::Check_patch_map<FacePatchMap>::value, "");
   typedef boost::graph_traits<TriangleMesh> GT;
@@ -112,16 +117,36 @@ void write_atlas_PNG(std::ostream& out, const TriangleMesh& mesh, FacePatchMap p
   const internal::Rgb_image::Color red = {{ 255, 0, 0 }};
   const internal::Rgb_image::Color dark = {{ 24, 24, 24 }};
 
+  if(tile < 1001)
+    throw Input_error("the UDIM tile must be 1001 or above, not " + std::to_string(tile));
+  const double tile_u = double((tile - 1001) % 10), tile_v = double((tile - 1001) / 10);
   auto pixel = [size](const P2& t) { return P2{{ t[0] * size, (1.0 - t[1]) * size }}; };
-  auto uv_at = [&uv](halfedge_descriptor h) {
+  auto uv_at = [&](halfedge_descriptor h) {
     const auto& t = get(uv, h);
-    return P2{{ CGAL::to_double(t.x()), CGAL::to_double(t.y()) }};
+    return P2{{ CGAL::to_double(t.x()) - tile_u, CGAL::to_double(t.y()) - tile_v }};
+  };
+  // Whether the face is drawn: its UV centroid is in the tile.
+  auto in_tile = [&](face_descriptor f) {
+    if(tile == 1001)
+      return true;
+    P2 sum{{ 0., 0. }};
+    double n = 0.;
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
+    {
+      const P2 t = uv_at(h);
+      sum[0] += t[0];
+      sum[1] += t[1];
+      n += 1.;
+    }
+    return sum[0] >= 0. && sum[0] < n && sum[1] >= 0. && sum[1] < n;
   };
 
   std::vector<std::vector<P2> > flipped; // the fan triangles with negative UV area, in pixels
   std::vector<P2> corners;
   for(face_descriptor f : faces(mesh))
   {
+    if(!in_tile(f))
+      continue;
     corners.clear();
     for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
       corners.push_back(uv_at(h));
@@ -140,12 +165,16 @@ void write_atlas_PNG(std::ostream& out, const TriangleMesh& mesh, FacePatchMap p
   }
 
   for(face_descriptor f : faces(mesh))
+  {
+    if(!in_tile(f))
+      continue;
     for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
     {
       const halfedge_descriptor o = opposite(h, mesh);
       if(is_border(o, mesh) || get(patch, face(o, mesh)) != get(patch, f))
         image.draw_line(pixel(uv_at(prev(h, mesh))), pixel(uv_at(h)), dark);
     }
+  }
 
   for(const std::vector<P2>& t : flipped)
   {

@@ -121,7 +121,7 @@ class Raster_packer
 public:
   // `columns` cells across the unit square; every chart keeps `pad_cells`
   // empty cells between itself and any other chart or the square's sides.
-  // The charts are packed in a strip of `columns` cells and twice as many
+  // run() packs the charts in a strip of `columns` cells and twice as many
   // rows, so that a packing that does not fit says by how much.
   Raster_packer(std::size_t columns, std::size_t pad_cells) : n_(columns), rows_(2 * columns), pad_(pad_cells) {}
 
@@ -135,7 +135,37 @@ public:
   bool run(const std::vector<Profile_chart>& charts, double scale, std::vector<Profile_placement>& out)
   {
     out.assign(charts.size(), Profile_placement());
-    const std::vector<std::size_t> order = largest_first(charts);
+    rows_ = 2 * n_;
+    return pack(charts, largest_first(charts), scale, out, nullptr) && used_rows_ <= n_;
+  }
+
+  // Fills one page (the square) at `scale` with the charts of `candidates`,
+  // largest first; a chart that fits nowhere on it is left for the next
+  // page. `placed[i]` is set for the charts placed (their `out[i]` then
+  // holds their position); returns how many.
+  std::size_t fill_page(const std::vector<Profile_chart>& charts, const std::vector<std::size_t>& candidates,
+                        double scale, std::vector<Profile_placement>& out, std::vector<bool>& placed)
+  {
+    out.resize(charts.size());
+    placed.assign(charts.size(), false);
+    std::vector<std::size_t> order = largest_first(charts);
+    std::vector<bool> candidate(charts.size(), false);
+    for(std::size_t i : candidates)
+      candidate[i] = true;
+    order.erase(std::remove_if(order.begin(), order.end(), [&](std::size_t i) { return !candidate[i]; }),
+                order.end());
+    rows_ = n_;
+    pack(charts, order, scale, out, &placed);
+    return static_cast<std::size_t>(std::count(placed.begin(), placed.end(), true));
+  }
+
+private:
+  // Places the charts of `order` in turn on an empty strip of rows_ rows.
+  // Without `placed`, stops at the first chart that fits nowhere (returns
+  // false); with it, skips that chart.
+  bool pack(const std::vector<Profile_chart>& charts, const std::vector<std::size_t>& order, double scale,
+            std::vector<Profile_placement>& out, std::vector<bool>* placed)
+  {
     atlas_.reset(rows_, n_);
     longest_free_.assign(rows_, static_cast<long>(n_));
     occupied_run_.assign(rows_ * n_, 0);
@@ -173,6 +203,8 @@ public:
       });
       if(std::find(usable_, usable_ + 8, true) == usable_ + 8)
       {
+        if(placed != nullptr)
+          continue;
         used_rows_ = 0;
         return false;
       }
@@ -185,6 +217,8 @@ public:
       const Position best = side_by_side ? lowest_position_by_turn() : lowest_position();
       if(best.turns < 0)
       {
+        if(placed != nullptr)
+          continue;
         used_rows_ = rows_ + 1;
         return false;
       }
@@ -196,11 +230,14 @@ public:
       out[i].diagonal = best_turns % 2 == 1;
       out[i].x = double(best_x + static_cast<long>(pad_)) / double(n_);
       out[i].y = double(best_y + static_cast<long>(pad_)) / double(n_);
+      if(placed != nullptr)
+        (*placed)[i] = true;
     }
     used_rows_ = used;
-    return used <= n_;
+    return true;
   }
 
+public:
   // Whether the turns of a large chart are rasterized and searched on
   // several threads (with TBB). The layout is the same either way.
   void set_parallel(bool parallel) { parallel_ = with_tbb && parallel; }
