@@ -7,7 +7,7 @@
 //   disk_uv INPUT [-o OUT.obj] [--glb OUT.glb] [--atlas-png OUT.png]
 //           [--report OUT.json] [--patch-ids FILE] [--colored FILE.ply]
 //           [--method arap|conformal|lscm|mvc|tutte] [--packer tight|grid]
-//           [--resolution 1024] [--padding 2] [-n 10] [-k 5]
+//           [--resolution 1024|WxH] [--padding 2] [-n 10] [-k 5]
 //           [--threshold 0.7624] [--max-distortion 1] [--max-chart-faces 131072]
 //           [--threads 0] [--repair] [--triangulate] [--allow-special-input]
 //           [--no-fallback] [--quiet]
@@ -138,8 +138,8 @@ std::vector<std::int64_t> read_material_ids(const std::string& path, std::size_t
 // rather than left for the user to find in the picture.
 constexpr double low_packing_efficiency = 0.25;
 
-void warn_if_sparse(const DS::Packing_report& packing, std::size_t charts, unsigned int resolution, double padding,
-                    double texels_per_unit)
+void warn_if_sparse(const DS::Packing_report& packing, std::size_t charts, const std::string& resolution,
+                    double padding, double texels_per_unit)
 {
   if(!(packing.efficiency < low_packing_efficiency))
     return;
@@ -150,15 +150,15 @@ void warn_if_sparse(const DS::Packing_report& packing, std::size_t charts, unsig
       packing.number_of_pages == 1 ? "the page" : "the " + std::to_string(packing.number_of_pages) + " pages";
     std::fprintf(stderr,
                  "disk_uv: warning: the charts cover only %.1f%% of %s on the mean at --texels-per-unit %g (a page "
-                 "of --resolution %u texels holds more: lower --resolution or raise --texels-per-unit)\n",
-                 100 * packing.efficiency, pages.c_str(), texels_per_unit, resolution);
+                 "of --resolution %s texels holds more: lower --resolution or raise --texels-per-unit)\n",
+                 100 * packing.efficiency, pages.c_str(), texels_per_unit, resolution.c_str());
     return;
   }
   std::fprintf(stderr,
-               "disk_uv: warning: the charts cover only %.1f%% of the texture: at --resolution %u, --padding %g "
+               "disk_uv: warning: the charts cover only %.1f%% of the texture: at --resolution %s, --padding %g "
                "texels around each of %zu charts takes the rest (raise --resolution, lower --padding or set "
                "--max-charts)\n",
-               100 * packing.efficiency, resolution, padding, charts);
+               100 * packing.efficiency, resolution.c_str(), padding, charts);
 }
 
 // `path` with the UDIM tile before its extension: "atlas.png" ->
@@ -317,6 +317,34 @@ const CLI::Validator non_negative_count(
   },
   "COUNT");
 
+// "1024" or "2048x1024": the texture's width and height in texels; false
+// if `text` is neither.
+bool read_texture_size(const std::string& text, unsigned int& width, unsigned int& height)
+{
+  const std::size_t x = text.find('x');
+  const std::string sides[2] = { text.substr(0, x), x == std::string::npos ? text : text.substr(x + 1) };
+  unsigned int values[2] = { 0, 0 };
+  for(int k = 0; k < 2; ++k)
+  {
+    const std::string& side = sides[k];
+    const auto result = std::from_chars(side.data(), side.data() + side.size(), values[k]);
+    if(side.empty() || side.find_first_not_of("0123456789") != std::string::npos || result.ec != std::errc())
+      return false;
+  }
+  width = values[0];
+  height = values[1];
+  return true;
+}
+
+const CLI::Validator texture_size(
+  [](std::string& text) -> std::string {
+    unsigned int width, height;
+    return read_texture_size(text, width, height)
+             ? std::string()
+             : "'" + text + "' is not a non-negative integer or WIDTHxHEIGHT of them (or is too large)";
+  },
+  "N|WxH");
+
 const CLI::Validator non_empty_path(
   [](std::string& text) -> std::string { return text.empty() ? "the file name is empty" : std::string(); },
   "FILE");
@@ -393,7 +421,8 @@ int main(int argc, char** argv)
   DS::Distortion_bound bound;
   bool unbounded = false, rough_borders = false;
   std::size_t max_chart_faces = DS::default_max_chart_faces, max_charts = 0;
-  unsigned int resolution = 1024, threads = 0;
+  unsigned int threads = 0;
+  std::string resolution = "1024";
   bool no_fallback = false, quiet = false;
   disk_uv::Read_options read_options;
   app.add_option("INPUT", inputs,
@@ -409,7 +438,9 @@ int main(int argc, char** argv)
     ->capture_default_str();
   app.add_option("--packer", packer_name, "packing: tight (one texel density) or grid (the paper's)")
     ->capture_default_str();
-  app.add_option("--resolution", resolution, "target texture side in texels")->capture_default_str()->check(non_negative_count);
+  app.add_option("--resolution", resolution,
+                 "target texture side in texels, or WIDTHxHEIGHT (e.g. 2048x1024) for a non-square one (tight packer)")
+    ->capture_default_str()->check(texture_size);
   app.add_option("--padding", padding, "gap around charts in texels")->capture_default_str();
   app.add_option("--texels-per-unit", texels_per_unit,
                  "fixed texel density (texels per unit of length, tight packer): the charts fill as many pages of "
@@ -470,10 +501,13 @@ int main(int argc, char** argv)
   const std::string& input = inputs.front();
   try
   {
-    if(!png_path.empty() && (resolution == 0 || resolution > CGAL::Disk_segmentation::IO::max_atlas_png_resolution))
-      throw disk_uv::Tool_error("--atlas-png needs --resolution between 1 and " +
-                                std::to_string(CGAL::Disk_segmentation::IO::max_atlas_png_resolution) + ", not " +
-                                std::to_string(resolution));
+    unsigned int width = 0, height = 0;
+    read_texture_size(resolution, width, height);
+    for(unsigned int side : { width, height })
+      if(!png_path.empty() && (side == 0 || side > CGAL::Disk_segmentation::IO::max_atlas_png_resolution))
+        throw disk_uv::Tool_error("--atlas-png needs --resolution between 1 and " +
+                                  std::to_string(CGAL::Disk_segmentation::IO::max_atlas_png_resolution) + ", not " +
+                                  std::to_string(side));
     // Every output is checked before any work, written at the end.
     disk_uv::Output_files outputs;
     std::vector<disk_uv::Output_files::Writer> writers;
@@ -495,12 +529,15 @@ int main(int argc, char** argv)
     // With a fixed density the pages are known at the end: one picture each.
     if(texels_per_unit == 0)
       add_output("--atlas-png", png_path,
-                 [&](std::ostream& o) { CGAL::Disk_segmentation::IO::write_atlas_PNG(o, mesh, patch, uv, resolution); });
+                 [&](std::ostream& o) { CGAL::Disk_segmentation::IO::write_atlas_PNG(o, mesh, patch, uv, width, height); });
     std::vector<std::string> page_pictures;
+    // Several pages: the UVs written hold them as UDIM tiles, one picture each.
     auto add_page_outputs = [&](const DS::Packing_report& packing) {
+      const std::size_t pages = packing.number_of_pages;
+      if(pages > 1)
+        CGAL::Disk_segmentation::IO::move_pages_to_udim_tiles(mesh, patch, uv, packing.page_of_chart);
       if(texels_per_unit == 0 || png_path.empty())
         return;
-      const std::size_t pages = packing.number_of_pages;
       struct stat status;
       if(pages > 1 && ::stat(png_path.c_str(), &status) == 0 && !S_ISREG(status.st_mode))
         throw disk_uv::Tool_error("--atlas-png: the " + std::to_string(pages) + " pages need a picture each, named " +
@@ -511,11 +548,9 @@ int main(int argc, char** argv)
         const unsigned int tile = CGAL::Disk_segmentation::IO::udim_tile(page);
         page_pictures.push_back(pages == 1 ? png_path : page_file_name(png_path, tile));
         add_output("--atlas-png", page_pictures.back(), [&, tile](std::ostream& o) {
-          CGAL::Disk_segmentation::IO::write_atlas_PNG(o, mesh, patch, uv, resolution, tile);
+          CGAL::Disk_segmentation::IO::write_atlas_PNG(o, mesh, patch, uv, width, height, tile);
         });
       }
-      if(pages > 1)
-        CGAL::Disk_segmentation::IO::move_pages_to_udim_tiles(mesh, patch, uv, packing.page_of_chart);
     };
     add_output("--patch-ids", patch_ids_path, [&](std::ostream& o) { write_patch_ids(o, mesh, patch); });
     add_output("--colored", colored_path, [&](std::ostream& o) { write_colored_ply(o, mesh, patch); });
@@ -534,6 +569,9 @@ int main(int argc, char** argv)
     if(packer_name == "tight") packer = DS::Packing_method::TIGHT;
     else if(packer_name == "grid") packer = DS::Packing_method::GRID;
     else throw disk_uv::Tool_error("unknown packer '" + packer_name + "' (expected tight or grid)");
+    if(width != height && packer != DS::Packing_method::TIGHT)
+      throw disk_uv::Tool_error("--resolution " + resolution + " is not square: the grid packer's cells are square "
+                                "(use --packer tight)");
 
     const double inf = std::numeric_limits<double>::infinity();
     const std::size_t no_budget = (std::numeric_limits<std::size_t>::max)();
@@ -549,7 +587,7 @@ int main(int argc, char** argv)
         .straighten_borders(!rough_borders)
         .max_chart_faces(max_chart_faces).max_number_of_charts(max_charts == 0 ? no_budget : max_charts)
         .packing_method(packer)
-        .texture_resolution(resolution).padding_in_texels(padding).texels_per_unit(texels_per_unit)
+        .texture_resolution(width).texture_height(height).padding_in_texels(padding).texels_per_unit(texels_per_unit)
         .max_number_of_pages(max_pages).number_of_threads(threads);
     DS::check_uv_atlas_parameters(settings);
     const auto keep_going = std::function<bool(const std::string&, std::size_t, std::size_t)>(

@@ -25,15 +25,16 @@ struct Parameter_name
   const char* argument;  // disk_uv.atlas()'s keyword
 };
 
-inline const std::array<Parameter_name, 18>& parameter_names()
+inline const std::array<Parameter_name, 19>& parameter_names()
 {
-  static const std::array<Parameter_name, 18> names = { {
+  static const std::array<Parameter_name, 19> names = { {
     { "number_of_seeds", "-n/--seeds", "n (seeds)" },
     { "number_of_subsamples", "-k/--subsamples", "k (subsamples)" },
     { "merge_threshold", "--threshold", "threshold" },
     { "parameterization_method", "--method", "method" },
     { "packing_method", "--packer", "packer" },
     { "texture_resolution", "--resolution", "resolution" },
+    { "texture_height", "--resolution (its height)", "resolution (its height)" },
     { "padding_in_texels", "--padding", "padding" },
     { "texels_per_unit", "--texels-per-unit", "texels_per_unit" },
     { "max_number_of_pages", "--max-pages", "max_pages" },

@@ -109,10 +109,10 @@ _LOW_PACKING_EFFICIENCY = 0.25
 def _warn_if_sparse(efficiency, charts, resolution, padding, texels_per_unit):
     if efficiency < _LOW_PACKING_EFFICIENCY and texels_per_unit:
         warnings.warn("the charts cover only %.1f%% of their pages on the mean at texels_per_unit=%g (a page of "
-                      "resolution=%d texels holds more: lower resolution or raise texels_per_unit)"
+                      "resolution=%s texels holds more: lower resolution or raise texels_per_unit)"
                       % (100 * efficiency, texels_per_unit, resolution), RuntimeWarning, stacklevel=3)
     elif efficiency < _LOW_PACKING_EFFICIENCY:
-        warnings.warn("the charts cover only %.1f%% of the texture: at resolution=%d, padding=%g texels around "
+        warnings.warn("the charts cover only %.1f%% of the texture: at resolution=%s, padding=%g texels around "
                       "each of %d charts takes the rest (raise resolution, lower padding or set max_charts)"
                       % (100 * efficiency, resolution, padding, charts), RuntimeWarning, stacklevel=3)
 
@@ -172,7 +172,9 @@ def atlas(vertices, faces=None, method=_disk_uv.default_parameterization_method,
             charts (0: no bound).
         unbounded: no distortion or convexity bound (the paper's charts).
         rough_borders: keep the saw-toothed chart borders of the paper (neither smoothed nor straightened).
-        resolution, padding: texture side and gap between charts, in texels.
+        resolution, padding: texture side and gap between charts, in texels;
+            ``resolution=(width, height)`` for a non-square texture ("tight"
+            packer: the UVs span the unit square, the texels stay square).
         texels_per_unit: 0 (the largest density that fits the charts on one
             page) or a fixed texel density, in texels per unit of length
             ("tight" packer): the charts then fill as many pages of

@@ -211,6 +211,28 @@ std::size_t count_option(const py::dict& o, const char* name)
   return static_cast<std::size_t>(n);
 }
 
+// `resolution`: one integer (a square texture) or a (width, height) pair.
+void texture_size_option(const py::dict& o, std::size_t& width, std::size_t& height)
+{
+  const py::object value = o["resolution"];
+  if(py::isinstance<py::tuple>(value) || py::isinstance<py::list>(value))
+  {
+    const py::sequence pair = value;
+    if(pair.size() != 2)
+      throw Bad_argument("resolution must be an integer or a (width, height) pair, not a sequence of " +
+                         std::to_string(pair.size()));
+    py::dict sides;
+    sides["resolution (its width)"] = pair[0];
+    sides["resolution (its height)"] = pair[1];
+    width = count_option(sides, "resolution (its width)");
+    height = count_option(sides, "resolution (its height)");
+  }
+  else
+    width = height = count_option(o, "resolution");
+  if(width > std::numeric_limits<unsigned int>::max() || height > std::numeric_limits<unsigned int>::max())
+    throw Bad_argument("resolution is too large");
+}
+
 // Reals: Python's and numpy's numbers, not bools or strings.
 double real_option(const py::dict& o, const char* name)
 {
@@ -395,9 +417,8 @@ auto atlas_settings(const py::dict& o, std::string& method_name, std::string& pa
   if(packer_name == "tight") packer = DS::Packing_method::TIGHT;
   else if(packer_name == "grid") packer = DS::Packing_method::GRID;
   else throw Bad_argument("packer: unknown packer '" + packer_name + "' (expected tight or grid)");
-  const std::size_t resolution = count_option(o, "resolution");
-  if(resolution > std::numeric_limits<unsigned int>::max())
-    throw Bad_argument("resolution is too large");
+  std::size_t resolution = 0, height = 0;
+  texture_size_option(o, resolution, height);
   const std::size_t threads = count_option(o, "threads");
   if(threads > 4096)
     throw Bad_argument("threads must be at most 4096");
@@ -419,7 +440,8 @@ auto atlas_settings(const py::dict& o, std::string& method_name, std::string& pa
       .smooth_borders(!o["rough_borders"].cast<bool>())
       .straighten_borders(!o["rough_borders"].cast<bool>())
       .max_chart_faces(count_option(o, "max_chart_faces")).max_number_of_charts(max_charts).packing_method(packer)
-      .texture_resolution(static_cast<unsigned int>(resolution)).padding_in_texels(real_option(o, "padding"))
+      .texture_resolution(static_cast<unsigned int>(resolution)).texture_height(static_cast<unsigned int>(height))
+      .padding_in_texels(real_option(o, "padding"))
       .texels_per_unit(real_option(o, "texels_per_unit")).max_number_of_pages(count_option(o, "max_pages"))
       .number_of_threads(static_cast<unsigned int>(threads));
   DS::check_uv_atlas_parameters(settings);

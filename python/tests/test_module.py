@@ -197,6 +197,28 @@ def test_a_fixed_texel_density_spreads_the_charts_over_pages(tmp_path):
         disk_uv.atlas(vertices, faces, texels_per_unit=density / 10)
 
 
+def test_a_non_square_texture_keeps_the_uvs_in_the_unit_square():
+    vertices, faces = mesh("elephant.off")
+    square = disk_uv.atlas(vertices, faces, resolution=1024)
+    wide = disk_uv.atlas(vertices, faces, resolution=(2048, 512))
+    assert (wide.chart_ids == square.chart_ids).all()
+    assert wide.uvs.min() >= 0 and wide.uvs.max() <= 1
+    assert atlas_problems(list(wide.uvs)) == []
+    # In texels, (u * 2048, v * 512), every chart is a similar copy of the
+    # square atlas's, at one density: every edge has the same length ratio.
+    def edge_lengths(uvs, size):
+        texels = uvs * size
+        return numpy.linalg.norm(texels - numpy.roll(texels, 1, axis=1), axis=2)
+    ratio = edge_lengths(wide.uvs, (2048, 512)) / edge_lengths(square.uvs, (1024, 1024))
+    assert ratio.max() < ratio.min() * (1 + 1e-6)
+    with pytest.raises(ValueError, match=r"resolution \(its height\) must be at least 1"):
+        disk_uv.atlas(vertices, faces, resolution=(512, 0))
+    with pytest.raises(ValueError, match=r"resolution must be an integer or a \(width, height\) pair"):
+        disk_uv.atlas(vertices, faces, resolution=(512,))
+    with pytest.raises(ValueError, match=r"non-square texture"):
+        disk_uv.atlas(vertices, faces, resolution=(512, 256), packer="grid")
+
+
 def test_no_chart_spans_two_materials():
     vertices, faces = mesh("elephant.off")
     centroids = vertices[faces].mean(axis=1)

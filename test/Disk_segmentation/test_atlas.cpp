@@ -283,6 +283,30 @@ TEST(Atlas, MergingAcceptedChartsLeavesFewerChartsWithinTheBound)
   EXPECT_GT(fewer, 0u) << "no chart was merged on any mesh: the test is void";
 }
 
+// The stages see one chain type for any chain of values: two chains that
+// differ in the parameters given, their order and their value types give the
+// stages the same type, and so one instantiation of the pipeline.
+TEST(Atlas, ChainsOfValuesGiveTheStagesOneParameterType)
+{
+  Mesh m;
+  const auto a = DS::parameters::number_of_seeds(12).max_stretch(4.).texture_resolution(512u);
+  const auto b = DS::parameters::padding_in_texels(3).merge_threshold(0.5f).number_of_seeds(std::size_t(7))
+                   .smooth_borders(false).texels_per_unit(100.).max_number_of_charts(20u);
+  const auto stages_a = DS::internal::canonical_parameters(a, true);
+  const auto stages_b = DS::internal::canonical_parameters(b, true);
+  static_assert(std::is_same<decltype(stages_a), decltype(stages_b)>::value, "a value changed the stages' type");
+  // The values themselves are carried.
+  using CGAL::parameters::get_parameter;
+  EXPECT_EQ(get_parameter(stages_a, DS::internal_np::number_of_seeds), 12u);
+  EXPECT_EQ(get_parameter(stages_b, DS::internal_np::number_of_seeds), 7u);
+  EXPECT_FALSE(get_parameter(stages_b, DS::internal_np::smooth_borders));
+  EXPECT_DOUBLE_EQ(get_parameter(stages_b, DS::internal_np::merge_threshold), double(0.5f));
+  // A map is kept, and changes the type (so it is read as given).
+  const auto vpm = get(CGAL::vertex_point, m);
+  const auto with_map = DS::internal::canonical_parameters(a.vertex_point_map(vpm), true);
+  static_assert(!std::is_same<decltype(stages_a), decltype(with_map)>::value, "the point map was dropped");
+}
+
 TEST(Atlas, AChartBudgetIsMetWithValidDisksOrReportedAsUnmet)
 {
   Mesh free_mesh = load("elephant.off");

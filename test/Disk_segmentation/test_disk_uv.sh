@@ -159,6 +159,26 @@ ok = (bad == 0 and p['pages'] >= 2 and p['udim_tiles'] and sorted(tiles) == list
 print(bad, sorted(tiles), pictures, p['pages']) if not ok else None
 sys.exit(0 if ok else 1)" && grep -q "pages at .* texels per unit, as UDIM tiles 1001 to" "$work/out.txt" \
   && pass || fail "--texels-per-unit pages: $(cat "$work/err.txt")"
+# A non-square texture: the picture has its size, the UVs span the unit
+# square and the report's density is per texel of width.
+"$tool" "$data/elephant.off" --resolution 2048x512 --atlas-png "$work/wide.png" -o "$work/wide.obj" \
+  --report "$work/wide.json" > /dev/null 2> "$work/err.txt"
+python3 -c "
+import json, struct, sys
+png = open('$work/wide.png', 'rb').read(24)
+size = struct.unpack('>II', png[16:24])
+uv = [tuple(map(float, l.split()[1:3])) for l in open('$work/wide.obj') if l.startswith('vt ')]
+p = json.load(open('$work/wide.json'))['packing']
+sys.exit(0 if size == (2048, 512) and uv and all(0 <= u <= 1 and 0 <= v <= 1 for u, v in uv)
+         and p['efficiency'] > 0.3 and p['pages'] == 1 else 1)" && [ ! -s "$work/err.txt" ] \
+  && pass || fail "--resolution 2048x512: $(cat "$work/err.txt")"
+expect_error 2 "is not a non-negative integer or WIDTHxHEIGHT" "$data/elephant.off" --resolution 2048x
+expect_error 1 "--resolution 512x256 is not square: .*--packer tight" "$data/elephant.off" --resolution 512x256 \
+  --packer grid
+expect_error 1 "--resolution \(its height\) must be at least 1" "$data/elephant.off" --resolution 512x0
+# The same UDIM tiles without the pictures.
+"$tool" "$data/elephant.off" --texels-per-unit "$density" -o "$work/pages_only.obj" -q 2> "$work/err.txt"
+cmp -s "$work/pages.obj" "$work/pages_only.obj" && pass || fail "the OBJ's UDIM tiles depend on --atlas-png"
 expect_error 1 "patch #[0-9]+ is [0-9]+ x [0-9]+ texels and does not fit a page" "$data/elephant.off" \
   --texels-per-unit 100000 --max-pages 1000000000
 expect_error 1 "need more than 2 pages .*--max-pages" "$data/elephant.off" --texels-per-unit "$density" --max-pages 2

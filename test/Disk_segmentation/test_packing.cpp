@@ -336,9 +336,13 @@ double chart_distance(const std::vector<std::array<Point_2, 3> >& s, const std::
 }
 
 // Checks everything pack_patches promises, from the input and output UVs.
+// `aspect`: the texture's height over its width. Charts are checked in
+// texel-proportional coordinates (u, aspect v), where each must be a similar
+// copy of its input and the page is [0, 1] x [0, aspect].
 void check_packing(const Case& c, const std::vector<Point_2>& before, const DS::Packing_report& report,
-                   DS::Packing_method method, double resolution, double padding_in_texels)
+                   DS::Packing_method method, double resolution, double padding_in_texels, double aspect = 1.)
 {
+  auto page_uv = [&](halfedge_descriptor h) { return Point_2(c.uv[h].x(), aspect * c.uv[h].y()); };
   const Mesh& m = c.mesh;
   const std::size_t P = c.number_of_patches;
   ASSERT_EQ(report.number_of_charts, P);
@@ -356,10 +360,10 @@ void check_packing(const Case& c, const std::vector<Point_2>& before, const DS::
     std::vector<Vec3> x;
     for(halfedge_descriptor h : CGAL::halfedges_around_face(m.halfedge(f), m))
     {
-      const Point_2& u = c.uv[h];
+      const Point_2& u = page_uv(h);
       ASSERT_TRUE(std::isfinite(u.x()) && std::isfinite(u.y()));
       ASSERT_GE(u.x(), 0.); ASSERT_LE(u.x(), 1.);
-      ASSERT_GE(u.y(), 0.); ASSERT_LE(u.y(), 1.);
+      ASSERT_GE(u.y(), 0.); ASSERT_LE(u.y(), aspect * (1. + 1e-12));
       q.push_back(u);
       x.push_back(point3(m, m.target(h)));
       corners[p].push_back(h);
@@ -386,11 +390,11 @@ void check_packing(const Case& c, const std::vector<Point_2>& before, const DS::
   for(std::size_t k = 0; k < report.number_of_pages; ++k)
   {
     EXPECT_GT(page_area[k], 0.) << "page " << k << " holds no chart";
-    EXPECT_LE(page_area[k], 1.);
-    EXPECT_NEAR(report.page_efficiency[k], page_area[k], 1e-9);
+    EXPECT_LE(page_area[k], aspect);
+    EXPECT_NEAR(report.page_efficiency[k], page_area[k] / aspect, 1e-9);
   }
   const double pages = double(report.number_of_pages);
-  EXPECT_NEAR(report.efficiency, total_uv_area / pages, 1e-9 * std::max(1., total_uv_area));
+  EXPECT_NEAR(report.efficiency, total_uv_area / aspect / pages, 1e-9 * std::max(1., total_uv_area));
   EXPECT_GT(report.efficiency, 0.);
   EXPECT_LE(report.efficiency, 1.);
 
@@ -410,14 +414,14 @@ void check_packing(const Case& c, const std::vector<Point_2>& before, const DS::
     const halfedge_descriptor g0 = corners[p][0];
     halfedge_descriptor g1 = g0;
     for(halfedge_descriptor h : corners[p]) if(h.idx() == far) g1 = h;
-    const std::complex<double> w0(c.uv[g0].x(), c.uv[g0].y()), w1(c.uv[g1].x(), c.uv[g1].y());
+    const std::complex<double> w0(page_uv(g0).x(), page_uv(g0).y()), w1(page_uv(g1).x(), page_uv(g1).y());
     const std::complex<double> a = (w1 - w0) / (z1 - z0);
     const std::complex<double> b = w0 - a * z0;
     const double size = std::abs(w1 - w0);
     for(halfedge_descriptor h : corners[p])
     {
       const std::complex<double> z(before[h.idx()].x(), before[h.idx()].y());
-      const std::complex<double> w(c.uv[h].x(), c.uv[h].y());
+      const std::complex<double> w(page_uv(h).x(), page_uv(h).y());
       ASSERT_LT(std::abs(a * z + b - w), 1e-9 * std::max(size, 1e-3)) << "chart " << p << " is not a similar copy";
     }
     chart_scale[p] = std::sqrt(uv_area[p] / area3[p]);
@@ -428,7 +432,7 @@ void check_packing(const Case& c, const std::vector<Point_2>& before, const DS::
       {
         const halfedge_descriptor n = m.next(h);
         const double l3 = norm3(sub(point3(m, m.target(n)), point3(m, m.target(h))));
-        const double luv = std::sqrt(CGAL::squared_distance(c.uv[n], c.uv[h]));
+        const double luv = std::sqrt(CGAL::squared_distance(page_uv(n), page_uv(h)));
         ASSERT_NEAR(luv / l3, chart_scale[p], 1e-7 * chart_scale[p]);
       }
   }
@@ -445,13 +449,13 @@ void check_packing(const Case& c, const std::vector<Point_2>& before, const DS::
     std::array<Point_2, 3> t;
     int i = 0;
     for(halfedge_descriptor h : CGAL::halfedges_around_face(m.halfedge(f), m))
-      t[i++] = c.uv[h];
+      t[i++] = page_uv(h);
     triangles[c.patch[f]].push_back(t);
   }
   for(std::size_t p = 0; p < P; ++p)
   {
     EXPECT_GE(box[p].xmin, pad - eps); EXPECT_GE(box[p].ymin, pad - eps);
-    EXPECT_LE(box[p].xmax, 1. - pad + eps); EXPECT_LE(box[p].ymax, 1. - pad + eps);
+    EXPECT_LE(box[p].xmax, 1. - pad + eps); EXPECT_LE(box[p].ymax, aspect - pad + eps);
     for(std::size_t q = p + 1; q < P; ++q)
     {
       if(report.page_of_chart[p] != report.page_of_chart[q])
@@ -779,6 +783,58 @@ TEST(Packing, FixedTexelDensitySpreadsTheChartsOverPages)
     DS::parameters::texture_resolution(512u).padding_in_texels(2.).texels_per_unit(density).number_of_threads(1u));
   EXPECT_EQ(sequential.page_of_chart, r.page_of_chart);
   EXPECT_TRUE(snapshot(again) == snapshot(paged));
+}
+
+TEST(Packing, NonSquareTexturesKeepTheTexelsSquare)
+{
+  std::vector<int> cuts;
+  for(int x = 0; x <= 12; ++x) cuts.push_back(x);
+  cuts.push_back(17);
+  cuts.push_back(25);
+  Case square = grid_case(cuts, cuts);
+  const std::vector<Point_2> square_before = snapshot(square);
+  const DS::Packing_report r_square = DS::pack_patches(
+    square.mesh, square.patch, square.uv, DS::parameters::texture_resolution(512u).padding_in_texels(2.));
+  check_packing(square, square_before, r_square, DS::Packing_method::TIGHT, 512., 2.);
+  for(unsigned int height : { 128u, 2048u })
+  {
+    SCOPED_TRACE("512 x " + std::to_string(height));
+    Case c = grid_case(cuts, cuts);
+    const std::vector<Point_2> before = snapshot(c);
+    const DS::Packing_report r = DS::pack_patches(
+      c.mesh, c.patch, c.uv, DS::parameters::texture_resolution(512u).texture_height(height).padding_in_texels(2.));
+    check_packing(c, before, r, DS::Packing_method::TIGHT, 512., 2., double(height) / 512.);
+    std::cout << "[ mixed grid, " << c.number_of_patches << " charts ] 512 x " << height << ": " << r.efficiency
+              << " of the page at " << r.texels_per_unit << " texels per unit (512 x 512: " << r_square.efficiency
+              << " at " << r_square.texels_per_unit << ")" << std::endl;
+    // A page of 4 times (a quarter of) the square's area holds the charts
+    // at about twice (half) the square's density.
+    const double expected = r_square.texels_per_unit * std::sqrt(double(height) / 512.);
+    EXPECT_GT(r.texels_per_unit, 0.75 * expected);
+    EXPECT_LT(r.texels_per_unit, 1.25 * expected);
+
+    // Pages at a fixed density on the same texture.
+    Case paged = grid_case(cuts, cuts);
+    const std::vector<Point_2> paged_before = snapshot(paged);
+    const DS::Packing_report rp = DS::pack_patches(
+      paged.mesh, paged.patch, paged.uv,
+      DS::parameters::texture_resolution(512u).texture_height(height).padding_in_texels(2.)
+        .texels_per_unit(1.5 * r.texels_per_unit));
+    check_packing(paged, paged_before, rp, DS::Packing_method::TIGHT, 512., 2., double(height) / 512.);
+    EXPECT_GE(rp.number_of_pages, 2u);
+  }
+  Case grid = grid_case(cuts, cuts);
+  EXPECT_THROW(DS::pack_patches(grid.mesh, grid.patch, grid.uv,
+                                DS::parameters::packing_method(DS::Packing_method::GRID).texture_resolution(512u)
+                                  .texture_height(256u)),
+               DS::Input_error);
+  EXPECT_THROW(DS::pack_patches(grid.mesh, grid.patch, grid.uv,
+                                DS::parameters::texture_resolution(512u).texture_height(0u)),
+               DS::Input_error);
+  // The padding is checked against the shorter side.
+  EXPECT_THROW(DS::pack_patches(grid.mesh, grid.patch, grid.uv,
+                                DS::parameters::texture_resolution(512u).texture_height(8u).padding_in_texels(4.)),
+               DS::Input_error);
 }
 
 TEST(Packing, FixedTexelDensityThatCannotBePackedThrowsAndWritesNothing)

@@ -8,6 +8,7 @@
 
 #include <CGAL/Disk_segmentation/Input_error.h>
 #include <CGAL/Disk_segmentation/parameters.h>
+#include <CGAL/Disk_segmentation/internal/Canonical_parameters.h>
 #include <CGAL/Disk_segmentation/internal/Chart_packer.h>
 #include <CGAL/Disk_segmentation/internal/Parameter_checks.h>
 #include <CGAL/Disk_segmentation/internal/Profile_packer.h>
@@ -81,8 +82,9 @@ namespace internal {
 struct Packing_settings
 {
   Packing_method method;
-  double resolution;
-  double padding;  // in texels
+  double resolution;  // the texture's width, in texels
+  double height;      // its height
+  double padding;     // in texels
   // Fixed texel density, charts spread over pages; 0: the largest common
   // scale that fits all charts on one page.
   double texels_per_unit = 0.;
@@ -113,6 +115,7 @@ Packing_settings packing_settings(const NamedParameters& np)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
+  using CGAL::parameters::is_default_parameter;
   Packing_settings s;
   s.method = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::packing_method),
                               Packing_method::TIGHT);
@@ -126,14 +129,25 @@ Packing_settings packing_settings(const NamedParameters& np)
     "texture_resolution"));
   if(!(s.resolution >= 1.) || !std::isfinite(s.resolution))
     throw Input_error("pack_patches: texture_resolution must be at least 1");
+  s.height = s.resolution;
+  if(!is_default_parameter<NamedParameters, Disk_segmentation::internal_np::texture_height_t>::value)
+  {
+    s.height = static_cast<double>(count_parameter(
+      choose_parameter(get_parameter(np, Disk_segmentation::internal_np::texture_height), 1024u), "texture_height"));
+    if(!(s.height >= 1.))
+      throw Input_error("pack_patches: texture_height must be at least 1");
+    if(s.height != s.resolution && s.method != Packing_method::TIGHT)
+      throw Input_error("pack_patches: a non-square texture (texture_height other than texture_resolution) needs "
+                        "packing_method TIGHT (the grid's cells are square)");
+  }
 
   s.padding = static_cast<double>(
     choose_parameter(get_parameter(np, Disk_segmentation::internal_np::padding_in_texels), 2.));
   if(!(s.padding >= 0.) || !std::isfinite(s.padding))
     throw Input_error("pack_patches: padding_in_texels must be a finite number >= 0");
-  if(!(2. * s.padding < s.resolution))
-    throw Input_error("pack_patches: padding_in_texels leaves no room: twice the padding must be "
-                      "less than texture_resolution");
+  if(!(2. * s.padding < (std::min)(s.resolution, s.height)))
+    throw Input_error(std::string("pack_patches: padding_in_texels leaves no room: twice the padding must be "
+                                  "less than ") + (s.height < s.resolution ? "texture_height" : "texture_resolution"));
   s.texels_per_unit = static_cast<double>(
     choose_parameter(get_parameter(np, Disk_segmentation::internal_np::texels_per_unit), 0.));
   if(!(s.texels_per_unit >= 0.) || !std::isfinite(s.texels_per_unit))
@@ -152,12 +166,28 @@ Packing_settings packing_settings(const NamedParameters& np)
   return s;
 }
 
+// The page's height over its width: in units of the width, a page is
+// [0, 1] x [0, aspect].
+inline double page_aspect(const Packing_settings& s) { return s.height / s.resolution; }
+
+// "1024 texels" or "2048 x 1024 texels".
+inline std::string texture_size(const Packing_settings& s)
+{
+  std::ostringstream text;
+  text << s.resolution;
+  if(s.height != s.resolution)
+    text << " x " << s.height;
+  text << " texels";
+  return text.str();
+}
+
 // The most charts the padding leaves room for, at any scale. TIGHT: the
 // rectangles, grown by the padding on their right and top and so larger
-// than pad x pad, fill [pad, 1]^2: fewer than ((1 - pad) / pad)^2 of them
-// (an area bound: what the packer finds may be less). GRID: a cell of a
-// c x c grid is (1 - pad) / c wide and keeps pad inside around a chart of
-// positive size: c < (1 - pad) / pad.
+// than pad x pad, fill [pad, 1] x [pad, aspect]: fewer than
+// ((1 - pad) / pad) ((aspect - pad) / pad) of them (an area bound: what the
+// packer finds may be less). GRID: a cell of a c x c grid is (1 - pad) / c
+// wide and keeps pad inside around a chart of positive size:
+// c < (1 - pad) / pad.
 inline double packing_capacity(const Packing_settings& s)
 {
   const double pad = s.padding / s.resolution;
@@ -169,7 +199,7 @@ inline double packing_capacity(const Packing_settings& s)
     const double columns = std::ceil(across) - 1.;
     return columns > 0. ? columns * columns : 0.;
   }
-  return std::ceil(across * across) - 1.;
+  return std::ceil(across * ((page_aspect(s) - pad) / pad)) - 1.;
 }
 
 // Throws when `number_of_charts` cannot be packed at any scale, before the
@@ -181,7 +211,7 @@ inline void check_packing_capacity(const Packing_settings& s, std::size_t number
     return;
   std::ostringstream message;
   message << "pack_patches: padding_in_texels (" << s.padding << ") is too large to place " << number_of_charts
-          << " charts on a texture of " << s.resolution << " texels (texture_resolution): it leaves room for "
+          << " charts on a texture of " << texture_size(s) << " (texture_resolution): it leaves room for "
           << static_cast<std::size_t>(capacity) << " at most";
   if(s.max_pages > 1)
     message << " on " << s.max_pages << " pages (max_number_of_pages)";
@@ -443,6 +473,14 @@ inline std::size_t shape_columns(const Packing_settings& s)
   return (std::min)(std::size_t(512), static_cast<std::size_t>(s.resolution));
 }
 
+// The page's rows of square cells (its height over a cell's side, rounded
+// down: a partial row is left empty).
+inline std::size_t shape_rows(const Packing_settings& s, std::size_t columns)
+{
+  return (std::max)(std::size_t(1),
+                    static_cast<std::size_t>(std::floor(page_aspect(s) * double(columns) * (1. + 1e-12))));
+}
+
 // The padding in whole cells, rounded up.
 inline std::size_t shape_pad_cells(const Packing_settings& s, std::size_t columns)
 {
@@ -546,7 +584,8 @@ std::vector<Chart_similarity> shape_layout(const Chart_set<TriangleMesh>& charts
   const Shape_input shapes(charts, density);
   const std::vector<Profile_chart>& input = shapes.charts;
   const double total = shapes.total_area;
-  const double hi = total > 0. ? 1. / std::sqrt(total) : rectangle_scale;
+  const std::size_t rows = shape_rows(s, columns);
+  const double hi = total > 0. ? std::sqrt(page_aspect(s) / total) : rectangle_scale;
   std::size_t trial = 0;  // reported, after the rectangles' (see report_packing_trial())
 
   // The profile packer's largest scale in [rectangle_scale, hi) at which
@@ -555,7 +594,7 @@ std::vector<Chart_similarity> shape_layout(const Chart_set<TriangleMesh>& charts
   // 90 atlases (30 meshes, 3 bounds): the same UV area as to 0.2 percent on
   // the mean, 10 % less packing time.
   auto profile_search = [&](std::vector<Profile_placement>& best) {
-    Profile_packer packer(columns, pad_cells);
+    Profile_packer packer(columns, pad_cells, rows);
     packer.set_parallel(s.threads != 1);
     std::vector<Profile_placement> placement;
     double lo = rectangle_scale, top = hi;
@@ -586,14 +625,14 @@ std::vector<Chart_similarity> shape_layout(const Chart_set<TriangleMesh>& charts
   // the profile packer (many charts), it starts 20 % above the rectangles'
   // scale, about where it ends, and a failure only aims lower.
   auto raster_search = [&](double profile_scale, std::vector<Profile_placement>& best) {
-    Raster_packer packer(columns, pad_cells);
+    Raster_packer packer(columns, pad_cells, rows);
     packer.set_parallel(s.threads != 1);
     std::vector<Profile_placement> placement;
     const bool after_profile = profile_scale > 0.;
     double fit = 0., fail = hi;
     double scale = after_profile ? (std::max)(profile_scale, rectangle_scale)
                                  : (std::min)(hi, raster_start_over_rectangles * rectangle_scale);
-    const double target = double(columns);
+    const double target = double(rows);
     const double tol = 0.01;
     const int max_trials = 6;
     for(int raster_trial = 0; raster_trial < max_trials && fail > fit * (1. + tol); ++raster_trial)
@@ -668,11 +707,11 @@ std::vector<Chart_similarity> paged_layout(const Chart_set<TriangleMesh>& charts
   global_scale = scale;
   const Shape_input shapes(charts, density);
   // Pages never hold more than their area: a quick "no" before any packing.
-  const double least_pages = shapes.total_area * scale * scale;
+  const double least_pages = shapes.total_area * scale * scale / page_aspect(s);
   auto too_many_pages = [&] {
     std::ostringstream message;
     message << "pack_patches: at texels_per_unit " << s.texels_per_unit << " the charts need more than "
-            << s.max_pages << " pages of " << s.resolution << " texels (max_number_of_pages); lower "
+            << s.max_pages << " pages of " << texture_size(s) << " (max_number_of_pages); lower "
             << "texels_per_unit or raise texture_resolution or max_number_of_pages";
     return Input_error(message.str());
   };
@@ -680,7 +719,7 @@ std::vector<Chart_similarity> paged_layout(const Chart_set<TriangleMesh>& charts
     throw too_many_pages();
 
   const std::size_t columns = shape_columns(s);
-  Raster_packer packer(columns, shape_pad_cells(s, columns));
+  Raster_packer packer(columns, shape_pad_cells(s, columns), shape_rows(s, columns));
   packer.set_parallel(s.threads != 1);
   std::vector<Profile_placement> placement(n), on_page;
   std::vector<bool> placed;
@@ -703,7 +742,7 @@ std::vector<Chart_similarity> paged_layout(const Chart_set<TriangleMesh>& charts
       message << "pack_patches: at texels_per_unit " << s.texels_per_unit << ", " << patch_name(p) << " is "
               << std::ceil(charts.box[p].width() * to_texels) << " x "
               << std::ceil(charts.box[p].height() * to_texels) << " texels and does not fit a page of "
-              << s.resolution << " texels (texture_resolution) with padding_in_texels " << s.padding
+              << texture_size(s) << " (texture_resolution) with padding_in_texels " << s.padding
               << "; lower texels_per_unit or raise texture_resolution";
       throw Input_error(message.str());
     }
@@ -740,12 +779,12 @@ std::vector<Chart_similarity> tight_layout(const Chart_set<TriangleMesh>& charts
   page_of_chart.assign(n, 0);
   // Rectangles grown by the padding on their right and top fill [pad, 1]^2:
   // this leaves the padding between any two of them and along every side.
-  const Square_packing packing = pack_in_square(w, h, pad, 1. - pad);
+  const Square_packing packing = pack_in_rectangle(w, h, pad, 1. - pad, page_aspect(s) - pad);
   if(!(packing.scale > 0.))
   {
     std::ostringstream message;
     message << "pack_patches: padding_in_texels (" << s.padding << ") is too large to place " << n
-            << " charts on a texture of " << s.resolution << " texels";
+            << " charts on a texture of " << texture_size(s);
     throw Input_error(message.str());
   }
   global_scale = packing.scale;
@@ -840,6 +879,10 @@ Packing_report pack_checked_patches(const TriangleMesh& tm, FacePatchMap face_pa
   const std::vector<Chart_similarity> placement =
     tight ? tight_layout(charts, settings, global_scale, page_of_chart) : grid_layout(charts, settings);
 
+  // The layouts are in units of the page's width; v is divided by the
+  // page's aspect so that each page is the unit square of its UVs (on a
+  // non-square texture, each chart is a similar copy in texels, not in UVs).
+  const double aspect = page_aspect(settings);
   // Every halfedge of a face is written once, so nothing is moved twice.
   for(std::size_t i = 0; i < charts.faces.size(); ++i)
   {
@@ -849,13 +892,14 @@ Packing_report pack_checked_patches(const TriangleMesh& tm, FacePatchMap face_pa
     {
       const Packing_point q =
         sim.rotation(relative_to(to_packing_point(get(uv_map, h)), charts.origin[p]));
-      put(uv_map, h, UV_point(sim.scale * q.x + sim.tx, sim.scale * q.y + sim.ty));
+      put(uv_map, h, UV_point(sim.scale * q.x + sim.tx, (sim.scale * q.y + sim.ty) / aspect));
     }
   }
   report.number_of_pages = charts.size() == 0 ? 1 : *std::max_element(page_of_chart.begin(), page_of_chart.end()) + 1;
   report.page_efficiency.assign(report.number_of_pages, 0.);
   for(std::size_t p = 0; p < charts.size(); ++p)
-    report.page_efficiency[page_of_chart[p]] += placement[p].scale * placement[p].scale * charts.uv_area[p];
+    report.page_efficiency[page_of_chart[p]] +=
+      placement[p].scale * placement[p].scale * charts.uv_area[p] / aspect;
   for(double e : report.page_efficiency)
     report.efficiency += e / static_cast<double>(report.number_of_pages);
   report.page_of_chart = std::move(page_of_chart);
@@ -974,6 +1018,15 @@ Packing_report pack_checked_patches(const TriangleMesh& tm, FacePatchMap face_pa
 ///     \cgalParamDefault{`1024`}
 ///     \cgalParamExtra{must be at least 1}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{texture_height}
+///     \cgalParamDescription{`TIGHT` only: height, in texels, of a non-square texture; `texture_resolution` is
+///       then its width. The UVs still span the unit square (each page's), so that a chart is a similar copy of
+///       its parameterization in texels, stretched by `texture_height / texture_resolution` in \f$ v \f$ relative to
+///       \f$ u \f$ in UV units}
+///     \cgalParamType{`unsigned int`}
+///     \cgalParamDefault{`texture_resolution`}
+///     \cgalParamExtra{must be at least 1}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{padding_in_texels}
 ///     \cgalParamDescription{gap kept between the charts' bounding rectangles and along the sides of the square, in texels}
 ///     \cgalParamType{`double`}
@@ -1042,8 +1095,11 @@ Packing_report pack_patches(const TriangleMesh& tm,
   internal::Progress progress = internal::Progress::from(np);
   internal::Packing_settings settings = internal::packing_settings(np);
   settings.progress = &progress;
+  // The coordinates are read through a chain of the mesh's maps only: one
+  // instantiation for any chain of values.
   return internal::pack_checked_patches(tm, internal::checked_patch_map<TriangleMesh>(face_patch_map),
-                                        internal::checked_uv_map<TriangleMesh>(uv_map), settings, np);
+                                        internal::checked_uv_map<TriangleMesh>(uv_map), settings,
+                                        internal::forward_mesh_parameters(np, parameters::default_values()));
 }
 
 } // namespace Disk_segmentation

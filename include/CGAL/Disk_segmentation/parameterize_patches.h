@@ -14,6 +14,7 @@
 #include <CGAL/Disk_segmentation/parameters.h>
 #include <CGAL/Disk_segmentation/refine_to_topological_disks.h>
 #include <CGAL/Disk_segmentation/internal/Border_smoother.h>
+#include <CGAL/Disk_segmentation/internal/Canonical_parameters.h>
 #include <CGAL/Disk_segmentation/internal/Chart_rerouting.h>
 #include <CGAL/Disk_segmentation/internal/Chart_convexity.h>
 #include <CGAL/Disk_segmentation/internal/Chart_distortion.h>
@@ -1303,7 +1304,9 @@ Parameterization_report parameterize_patches(const TriangleMesh& tm,
 {
   static_assert(internal::Check_patch_map<FacePatchMap>::value, "");
   static_assert(internal::Check_named_parameters<NamedParameters>::value, "");
-  const internal::Indexed_input<TriangleMesh> input(tm, np);
+  // The mesh is read through a chain of its maps only: one instantiation for
+  // any chain of values.
+  const internal::Indexed_input<TriangleMesh> input(tm, internal::forward_mesh_parameters(np, parameters::default_values()));
   const Merge_tree* given = internal::merge_tree_parameter(np);
   Merge_tree tree;
   if(given != nullptr)

@@ -33,6 +33,7 @@ enum parameterization_method_t { parameterization_method };
 enum use_fallback_t { use_fallback };
 enum packing_method_t { packing_method };
 enum texture_resolution_t { texture_resolution };
+enum texture_height_t { texture_height };
 enum padding_in_texels_t { padding_in_texels };
 enum texels_per_unit_t { texels_per_unit };
 enum max_number_of_pages_t { max_number_of_pages };
@@ -100,6 +101,7 @@ struct Named_function_parameters
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(use_fallback_t, use_fallback)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(packing_method_t, packing_method)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(texture_resolution_t, texture_resolution)
+  CGAL_DISK_SEGMENTATION_ADD_PARAMETER(texture_height_t, texture_height)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(padding_in_texels_t, padding_in_texels)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(texels_per_unit_t, texels_per_unit)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(max_number_of_pages_t, max_number_of_pages)
@@ -181,6 +183,10 @@ CGAL_DISK_SEGMENTATION_ADD_PARAMETER(packing_method_t, packing_method)
 /// \ingroup PkgDiskSegmentationRef
 /// Side of the target texture in texels (`unsigned int`).
 CGAL_DISK_SEGMENTATION_ADD_PARAMETER(texture_resolution_t, texture_resolution)
+/// \ingroup PkgDiskSegmentationRef
+/// Height of a non-square target texture in texels (`unsigned int`);
+/// `texture_resolution` is then its width.
+CGAL_DISK_SEGMENTATION_ADD_PARAMETER(texture_height_t, texture_height)
 /// \ingroup PkgDiskSegmentationRef
 /// Gap kept around every chart, in texels of the target texture (`double`).
 CGAL_DISK_SEGMENTATION_ADD_PARAMETER(padding_in_texels_t, padding_in_texels)

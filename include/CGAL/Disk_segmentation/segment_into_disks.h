@@ -10,6 +10,7 @@
 #include <CGAL/Disk_segmentation/refine_to_topological_disks.h>
 #include <CGAL/Disk_segmentation/voronoi_fps_segmentation.h>
 #include <CGAL/Disk_segmentation/internal/Border_smoother.h>
+#include <CGAL/Disk_segmentation/internal/Canonical_parameters.h>
 #include <CGAL/Disk_segmentation/internal/Parameter_checks.h>
 #include <CGAL/Disk_segmentation/internal/Progress.h>
 
@@ -31,6 +32,29 @@ struct Segmentation_steps
   // For `seeds_output_iterator`, written by the caller once nothing can throw.
   std::vector<Index> seeds;
 };
+
+// The segmentation's values, read as the stages read them (counts checked
+// there, the threshold here), and the mesh's (forward_mesh_parameters()); `smooth_borders`
+// is always given (its default differs between uv_atlas() and
+// segment_into_disks()).
+template <typename NamedParameters>
+auto canonical_parameters(const NamedParameters& np, bool default_smooth_borders)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const std::size_t seeds = count_parameter(
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_seeds), std::size_t(10)),
+    "number_of_seeds");
+  const std::size_t subsamples = count_parameter(
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_subsamples), std::size_t(5)),
+    "number_of_subsamples");
+  const bool smooth = static_cast<bool>(
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::smooth_borders), default_smooth_borders));
+  return forward_mesh_parameters(np, parameters::number_of_seeds(seeds)
+                                       .number_of_subsamples(subsamples)
+                                       .merge_threshold(merge_threshold_parameter(np))
+                                       .smooth_borders(smooth));
+}
 
 // The whole method on an indexed mesh; `labels` receives the patch ids and
 // `tree` (if not null) the merges. Reports the end of each step to
@@ -130,9 +154,11 @@ std::size_t segment_into_disks(const TriangleMesh& tm,
 {
   static_assert(internal::Check_patch_map<FacePatchMap>::value, "");
   static_assert(internal::Check_named_parameters<NamedParameters>::value, "");
+  // One instantiation of the stages for any chain of values (see canonical_parameters()).
+  const auto stage_parameters = internal::canonical_parameters(np, false);
   internal::Indexed_triangle_mesh m;
   std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> face_handles;
-  internal::build_indexed_triangle_mesh(tm, np, m, face_handles);
+  internal::build_indexed_triangle_mesh(tm, stage_parameters, m, face_handles);
 
   std::vector<internal::Index> labels;
   // The caller's tree is replaced only once nothing can throw.
@@ -140,8 +166,9 @@ std::size_t segment_into_disks(const TriangleMesh& tm,
   Merge_tree staged_tree;
   internal::Progress progress = internal::Progress::from(np);
   const internal::Segmentation_steps steps = internal::segment_indexed(
-    m, face_handles, np, labels, tree != nullptr ? &staged_tree : nullptr,
-    CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::smooth_borders), false),
+    m, face_handles, stage_parameters, labels, tree != nullptr ? &staged_tree : nullptr,
+    CGAL::parameters::choose_parameter(
+      CGAL::parameters::get_parameter(stage_parameters, internal_np::smooth_borders), false),
     progress);
   if(tree != nullptr)
   {

@@ -78,10 +78,13 @@ namespace internal {
 
 // uv_atlas() up to the packing: the patches of `tm` in `face_patch_map`,
 // their charts' UVs in `uv_map` (not yet packed), the merge tree and the
-// seeds. Shared with uv_atlas_of_meshes().
+// seeds. Shared with uv_atlas_of_meshes(). `np` is a chain of
+// canonical_parameters(); the other values come checked in `settings` and
+// `packing`.
 template <typename TriangleMesh, typename FacePatchMap, typename UVMap, typename NamedParameters>
 Atlas_report segment_and_parameterize(const TriangleMesh& tm, FacePatchMap face_patch_map, UVMap uv_map,
-                                      const NamedParameters& np, Progress& progress, Merge_tree& tree,
+                                      const NamedParameters& np, const Parameterization_settings& settings,
+                                      const Packing_settings& packing, Progress& progress, Merge_tree& tree,
                                       std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& seeds)
 {
   using CGAL::parameters::choose_parameter;
@@ -100,7 +103,7 @@ Atlas_report segment_and_parameterize(const TriangleMesh& tm, FacePatchMap face_
         choose_parameter(get_parameter(np, Disk_segmentation::internal_np::smooth_borders), true), progress);
       // Charts only split from here: too many patches for the padding can
       // be told before the parameterization.
-      check_packing_capacity(packing_settings(np), steps.patches);
+      check_packing_capacity(packing, steps.patches);
       write_face_labels(input.face_handles, labels, face_patch_map);
       for(Index s : steps.seeds)
         seeds.push_back(input.face_handles[s]);
@@ -113,7 +116,6 @@ Atlas_report segment_and_parameterize(const TriangleMesh& tm, FacePatchMap face_
     }
 
     timer.start();
-    const Parameterization_settings settings = parameterization_settings(np);
     report.parameterization =
       parameterize_indexed_patches(tm, input, face_patch_map, uv_map, settings, progress, &tree);
     if constexpr(!is_default_parameter<NamedParameters, Disk_segmentation::internal_np::face_polygon_map_t>::value)
@@ -263,18 +265,23 @@ Atlas_report uv_atlas(const TriangleMesh& tm, UVMap uv_map, const NamedParameter
     choose_parameter(get_parameter(np, CGAL::internal_np::face_patch), face_patch_map));
   static_assert(internal::Check_patch_map<std::decay_t<decltype(user_patch_map)> >::value, "");
   internal::Progress progress = internal::Progress::from(np);
+  internal::Packing_settings packing = internal::packing_settings(np);
+  packing.progress = &progress;
+  // The stages see the values as checked settings and a chain whose type
+  // depends only on the maps given: they compile once for any chain of values.
+  const auto stage_parameters = internal::canonical_parameters(np, true);
   Merge_tree tree;
   std::vector<face_descriptor> seeds;
   const Staged_uv_map staged_uv = get(CGAL::dynamic_halfedge_property_t<UV_point>(), tm);
-  Atlas_report report = internal::segment_and_parameterize(tm, face_patch_map, staged_uv, np, progress, tree, seeds);
+  Atlas_report report =
+    internal::segment_and_parameterize(tm, face_patch_map, staged_uv, stage_parameters,
+                                       internal::parameterization_settings(np), packing, progress, tree, seeds);
 
   // The indexed mesh is freed: the packing reads the mesh again.
   progress("packing", 0, 1);
   CGAL::Real_timer timer;
   timer.start();
-  internal::Packing_settings packing = internal::packing_settings(np);
-  packing.progress = &progress;
-  report.packing = internal::pack_checked_patches(tm, face_patch_map, staged_uv, packing, np);
+  report.packing = internal::pack_checked_patches(tm, face_patch_map, staged_uv, packing, stage_parameters);
   report.packing_seconds = timer.time();
   progress("packing", 1, 1);
 

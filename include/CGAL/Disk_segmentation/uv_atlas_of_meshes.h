@@ -101,6 +101,8 @@ Multi_mesh_atlas_report uv_atlas_of_meshes(const std::vector<const TriangleMesh*
   internal::Packing_settings packing = internal::packing_settings(np);
   internal::Progress progress = internal::Progress::from(np);
   packing.progress = &progress;
+  const internal::Parameterization_settings settings = internal::parameterization_settings(np);
+  const auto stage_parameters = internal::canonical_parameters(np, true);
 
   // Each mesh alone, into maps of its own.
   Multi_mesh_atlas_report report;
@@ -116,8 +118,9 @@ Multi_mesh_atlas_report uv_atlas_of_meshes(const std::vector<const TriangleMesh*
     std::vector<face_descriptor> seeds;
     try
     {
-      report.meshes.push_back(
-        internal::segment_and_parameterize(tm, staged_patches.back(), staged_uvs.back(), np, progress, tree, seeds));
+      report.meshes.push_back(internal::segment_and_parameterize(tm, staged_patches.back(), staged_uvs.back(),
+                                                                 stage_parameters, settings, packing, progress, tree,
+                                                                 seeds));
     }
     catch(const Input_error& e)
     {

@@ -75,7 +75,8 @@ constexpr unsigned int max_atlas_png_resolution = 16384;
 /// \ingroup PkgDiskSegmentationIO
 ///
 /// Draws the atlas layout as an RGB PNG picture of `resolution` x
-/// `resolution` pixels, \f$ v \f$ up (row 0 is \f$ v = 1 \f$): white
+/// `height` pixels (`resolution` x `resolution` when `height` is 0),
+/// \f$ v \f$ up (row 0 is \f$ v = 1 \f$): white
 /// background, the faces of each chart filled with `chart_color()` of its
 /// id, chart borders (edges between two charts and mesh borders) as dark
 /// 1-pixel lines, and faces whose UV orientation is negative in pure red,
@@ -88,7 +89,8 @@ constexpr unsigned int max_atlas_png_resolution = 16384;
 ///
 /// @tparam TriangleMesh, FacePatchMap, UVMap as in `write_atlas_OBJ()`
 ///
-/// @throws Input_error if `resolution` is 0 or above `max_atlas_png_resolution`, or `tile` is below 1001
+/// @throws Input_error if `resolution` or `height` is above `max_atlas_png_resolution`, `resolution` is 0,
+///         or `tile` is below 1001
 /// @throws std::runtime_error if stb or the stream fails
 ///
 /// With `tile` (a UDIM tile number, `1001 + i + 10 j` for the square
@@ -100,7 +102,7 @@ constexpr unsigned int max_atlas_png_resolution = 16384;
 /// faces and resolution `R`.
 template <typename TriangleMesh, typename FacePatchMap, typename UVMap>
 void write_atlas_PNG(std::ostream& out, const TriangleMesh& mesh, FacePatchMap patch, UVMap uv,
-                     unsigned int resolution, unsigned int tile = 1001)
+                     unsigned int resolution, unsigned int height = 0, unsigned int tile = 1001)
 {
   static_assert(CGAL::Disk_segmentation::internal::Check_patch_map<FacePatchMap>::value, "");
   typedef boost::graph_traits<TriangleMesh> GT;
@@ -108,19 +110,21 @@ void write_atlas_PNG(std::ostream& out, const TriangleMesh& mesh, FacePatchMap p
   typedef typename GT::face_descriptor face_descriptor;
   typedef std::array<double, 2> P2;
 
-  if(resolution == 0 || resolution > max_atlas_png_resolution)
-    throw Input_error("the atlas resolution must be between 1 and " +
-                             std::to_string(max_atlas_png_resolution) + " pixels, not " +
-                             std::to_string(resolution));
-  const int size = static_cast<int>(resolution);
-  internal::Rgb_image image(size);
+  if(height == 0)
+    height = resolution;
+  for(unsigned int side : { resolution, height })
+    if(side == 0 || side > max_atlas_png_resolution)
+      throw Input_error("the atlas resolution must be between 1 and " + std::to_string(max_atlas_png_resolution) +
+                        " pixels, not " + std::to_string(side));
+  const int width = static_cast<int>(resolution), rows = static_cast<int>(height);
+  internal::Rgb_image image(width, rows);
   const internal::Rgb_image::Color red = {{ 255, 0, 0 }};
   const internal::Rgb_image::Color dark = {{ 24, 24, 24 }};
 
   if(tile < 1001)
     throw Input_error("the UDIM tile must be 1001 or above, not " + std::to_string(tile));
   const double tile_u = double((tile - 1001) % 10), tile_v = double((tile - 1001) / 10);
-  auto pixel = [size](const P2& t) { return P2{{ t[0] * size, (1.0 - t[1]) * size }}; };
+  auto pixel = [width, rows](const P2& t) { return P2{{ t[0] * width, (1.0 - t[1]) * rows }}; };
   auto uv_at = [&](halfedge_descriptor h) {
     const auto& t = get(uv, h);
     return P2{{ CGAL::to_double(t.x()) - tile_u, CGAL::to_double(t.y()) - tile_v }};
@@ -182,7 +186,7 @@ void write_atlas_PNG(std::ostream& out, const TriangleMesh& mesh, FacePatchMap p
     image.set_at({{ (t[0][0] + t[1][0] + t[2][0]) / 3, (t[0][1] + t[1][1] + t[2][1]) / 3 }}, red);
   }
 
-  if(stbi_write_png_to_func(&internal::write_to_ostream, &out, size, size, 3, image.data(), size * 3) == 0)
+  if(stbi_write_png_to_func(&internal::write_to_ostream, &out, width, rows, 3, image.data(), width * 3) == 0)
     throw std::runtime_error("stb failed to encode the atlas PNG");
   if(!out)
     throw std::runtime_error("error while writing the atlas PNG");

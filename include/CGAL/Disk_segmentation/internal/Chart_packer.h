@@ -332,8 +332,8 @@ struct Square_packing
 };
 
 // The largest scale found at which the rectangles (scale * w[i] + pad,
-// scale * h[i] + pad) pack into [0, side]^2, with their places; a scale of 0
-// when none was found.
+// scale * h[i] + pad) pack into [0, width] x [0, height], with their
+// places; a scale of 0 when none was found.
 //
 // Success is not monotone in the scale, so the search keeps the largest scale
 // that succeeded. It starts at an upper bound (the area and the longest side
@@ -342,8 +342,8 @@ struct Square_packing
 // square; steps are at least half a percent so that the boundary is soon
 // crossed, and once a bracket is within 2 percent it is bisected down to
 // `relative_precision`. This takes about half the runs of plain bisection.
-inline Square_packing pack_in_square(const std::vector<double>& w, const std::vector<double>& h,
-                                     double pad, double side, double relative_precision = 5e-4)
+inline Square_packing pack_in_rectangle(const std::vector<double>& w, const std::vector<double>& h, double pad,
+                                        double width, double height, double relative_precision = 5e-4)
 {
   Square_packing result;
   const std::size_t n = w.size();
@@ -358,7 +358,8 @@ inline Square_packing pack_in_square(const std::vector<double>& w, const std::ve
     longest = (std::max)(longest, (std::max)(w[i], h[i]));
   }
   const double c = static_cast<double>(n) * pad * pad;
-  if(!(longest > 0.) || !(side - pad > 0.) || !(c < side * side))
+  const double area = width * height;
+  if(!(longest > 0.) || !((std::min)(width, height) - pad > 0.) || !(c < area))
     return result;
   auto grown_area = [&](double s) { return (a * s + b) * s + c; };
   // The scale at which the grown area is `target` (> c).
@@ -369,9 +370,10 @@ inline Square_packing pack_in_square(const std::vector<double>& w, const std::ve
     return (-b + std::sqrt(b * b + 4. * a * (target - c))) / (2. * a);
   };
 
-  double upper = (side - pad) / longest;
+  // A rectangle may be turned, so the longest side bounds by the longer side.
+  double upper = ((std::max)(width, height) - pad) / longest;
   if(a > 0.)
-    upper = (std::min)(upper, side / std::sqrt(a));
+    upper = (std::min)(upper, std::sqrt(area / a));
 
   Chart_packer packer(w, h);
   std::vector<Packed_rectangle> trial;
@@ -380,9 +382,9 @@ inline Square_packing pack_in_square(const std::vector<double>& w, const std::ve
   // At most 60 packing runs, whatever the scales (a NaN one ends the search).
   for(int run = 0; run < 60 && scale > 0.; ++run)
   {
-    // Runs may go up to twice the side to measure how far off they are.
-    const double height = packer.run(scale, pad, side, 2. * side, trial);
-    if(height <= side)
+    // Runs may go up to twice the height to measure how far off they are.
+    const double used_height = packer.run(scale, pad, width, 2. * height, trial);
+    if(used_height <= height)
     {
       if(scale > result.scale)
       {
@@ -403,15 +405,22 @@ inline Square_packing pack_in_square(const std::vector<double>& w, const std::ve
       next = 0.5 * (lo + hi);
     else
     {
-      const double used = side * (height <= side ? height : (std::min)(height, 2. * side));
-      next = scale_for_area(grown_area(scale) / used * side * side);
-      next = (height <= side) ? (std::max)(next, scale * 1.005) : (std::min)(next, scale * 0.995);
+      const double used = width * (used_height <= height ? used_height : (std::min)(used_height, 2. * height));
+      next = scale_for_area(grown_area(scale) / used * area);
+      next = (used_height <= height) ? (std::max)(next, scale * 1.005) : (std::min)(next, scale * 0.995);
       if(!(next > lo && next < hi))
         next = (lo > 0. && hi < infinity) ? 0.5 * (lo + hi) : (lo > 0. ? (std::min)(upper, 2. * lo) : 0.5 * hi);
     }
     scale = (std::min)(next, upper);
   }
   return result;
+}
+
+// pack_in_rectangle() into [0, side]^2.
+inline Square_packing pack_in_square(const std::vector<double>& w, const std::vector<double>& h, double pad,
+                                     double side, double relative_precision = 5e-4)
+{
+  return pack_in_rectangle(w, h, pad, side, side, relative_precision);
 }
 
 } // namespace internal

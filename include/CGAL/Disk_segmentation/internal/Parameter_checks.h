@@ -30,7 +30,7 @@ namespace Disk_segmentation {
 namespace internal {
 
 // A count parameter (number_of_seeds, number_of_subsamples,
-// texture_resolution, number_of_threads, max_chart_faces,
+// texture_resolution, texture_height, number_of_threads, max_chart_faces,
 // max_number_of_charts, max_number_of_pages) as a std::size_t.
 // A floating-point value would be truncated without a word, so it does not
 // compile; a negative one would wrap around to a huge count, so it throws.
@@ -39,7 +39,7 @@ std::size_t count_parameter(const T& value, const char* name)
 {
   static_assert(std::is_integral<T>::value && !std::is_same<T, bool>::value,
                 "CGAL::Disk_segmentation: count parameters (number_of_seeds, number_of_subsamples, "
-                "texture_resolution, number_of_threads, max_chart_faces, max_number_of_charts, max_number_of_pages) take an integer, not a "
+                "texture_resolution, texture_height, number_of_threads, max_chart_faces, max_number_of_charts, max_number_of_pages) take an integer, not a "
                 "floating-point or boolean value");
   if constexpr(std::is_signed<T>::value)
     if(value < 0)
@@ -137,6 +137,7 @@ typedef std::tuple<
   Disk_segmentation::internal_np::seeds_output_iterator_t,
   Disk_segmentation::internal_np::parameterization_method_t, Disk_segmentation::internal_np::use_fallback_t,
   Disk_segmentation::internal_np::packing_method_t, Disk_segmentation::internal_np::texture_resolution_t,
+  Disk_segmentation::internal_np::texture_height_t,
   Disk_segmentation::internal_np::padding_in_texels_t, Disk_segmentation::internal_np::texels_per_unit_t,
   Disk_segmentation::internal_np::max_number_of_pages_t, Disk_segmentation::internal_np::number_of_threads_t,
   Disk_segmentation::internal_np::progress_callback_t, Disk_segmentation::internal_np::require_disk_patches_t,

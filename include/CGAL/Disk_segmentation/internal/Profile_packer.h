@@ -66,9 +66,12 @@ inline std::vector<std::size_t> largest_first(const std::vector<Profile_chart>& 
 class Profile_packer
 {
 public:
-  // `columns` cells across the unit square; every chart keeps `pad_cells`
-  // empty cells between itself and any other chart or the square's sides.
-  Profile_packer(std::size_t columns, std::size_t pad_cells) : n_(columns), pad_(pad_cells) {}
+  // `columns` cells across the page and `rows` up (the unit square by
+  // default); every chart keeps `pad_cells` empty cells between itself and
+  // any other chart or the page's sides.
+  Profile_packer(std::size_t columns, std::size_t pad_cells, std::size_t rows = 0)
+    : n_(columns), rows_(rows == 0 ? columns : rows), pad_(pad_cells)
+  {}
 
   // Packs every chart at `scale` (UV length = scale * density * length in
   // its frame). Returns false if one does not fit.
@@ -150,7 +153,7 @@ private:
       // A position whose top is already above the square or above the
       // best score (the waste below only adds to it) cannot win: its
       // columns are not all read.
-      const long ceiling = (std::min)(side, best.score) - p.height;
+      const long ceiling = (std::min)(static_cast<long>(rows_), best.score) - p.height;
       long y = 0;
       for(long c = 0; c < width && y <= ceiling; ++c)
         y = (std::max)(y, skyline_[x + c] - p.low[c]);
@@ -197,7 +200,7 @@ private:
       box.add(q);
     }
     const double w = to_cells * box.width(), h = to_cells * box.height();
-    if(!(w < double(n_)) || !(h < double(n_)))
+    if(!(w < double(n_)) || !(h < double(rows_)))
       return false;
     const long columns = static_cast<long>(std::ceil(w + slack));
     const long pad = static_cast<long>(pad_);
@@ -245,10 +248,10 @@ private:
         p.low[d] = (std::min)(p.low[d], bottom[c]);
     }
     p.height = highest + 2 * pad;
-    return p.height <= static_cast<long>(n_);
+    return p.height <= static_cast<long>(rows_);
   }
 
-  std::size_t n_, pad_;
+  std::size_t n_, rows_, pad_;
   std::vector<long> skyline_;
   Profile profiles_[4];
   bool parallel_ = false;

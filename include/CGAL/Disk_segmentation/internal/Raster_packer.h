@@ -119,14 +119,17 @@ private:
 class Raster_packer
 {
 public:
-  // `columns` cells across the unit square; every chart keeps `pad_cells`
-  // empty cells between itself and any other chart or the square's sides.
-  // run() packs the charts in a strip of `columns` cells and twice as many
-  // rows, so that a packing that does not fit says by how much.
-  Raster_packer(std::size_t columns, std::size_t pad_cells) : n_(columns), rows_(2 * columns), pad_(pad_cells) {}
+  // `columns` cells across the page and `page_rows` up (the unit square by
+  // default); every chart keeps `pad_cells` empty cells between itself and
+  // any other chart or the page's sides. run() packs the charts in a strip
+  // of `columns` cells and twice the page's rows, so that a packing that
+  // does not fit says by how much.
+  Raster_packer(std::size_t columns, std::size_t pad_cells, std::size_t page_rows = 0)
+    : n_(columns), page_rows_(page_rows == 0 ? columns : page_rows), rows_(2 * page_rows_), pad_(pad_cells)
+  {}
 
-  // Rows the last run used, padding included; above `columns` it did not
-  // fit in the square.
+  // Rows the last run used, padding included; above the page's rows it did
+  // not fit.
   std::size_t used_rows() const { return used_rows_; }
 
   // Packs every chart at `scale` (UV length = scale * density * length in
@@ -135,8 +138,8 @@ public:
   bool run(const std::vector<Profile_chart>& charts, double scale, std::vector<Profile_placement>& out)
   {
     out.assign(charts.size(), Profile_placement());
-    rows_ = 2 * n_;
-    return pack(charts, largest_first(charts), scale, out, nullptr) && used_rows_ <= n_;
+    rows_ = 2 * page_rows_;
+    return pack(charts, largest_first(charts), scale, out, nullptr) && used_rows_ <= page_rows_;
   }
 
   // Fills one page (the square) at `scale` with the charts of `candidates`,
@@ -154,7 +157,7 @@ public:
       candidate[i] = true;
     order.erase(std::remove_if(order.begin(), order.end(), [&](std::size_t i) { return !candidate[i]; }),
                 order.end());
-    rows_ = n_;
+    rows_ = page_rows_;
     pack(charts, order, scale, out, &placed);
     return static_cast<std::size_t>(std::count(placed.begin(), placed.end(), true));
   }
@@ -526,7 +529,7 @@ private:
     }
     const double w = to_cells * box.width(), h = to_cells * box.height();
     const long pad = static_cast<long>(pad_);
-    if(!(w + double(2 * pad) < double(n_)) || !(h + double(2 * pad) < double(n_)))
+    if(!(w + double(2 * pad) < double(n_)) || !(h + double(2 * pad) < double(page_rows_)))
       return false;
     const long columns = (std::max)(1L, static_cast<long>(std::ceil(w + slack)));
     const long rows = (std::max)(1L, static_cast<long>(std::ceil(h + slack)));
@@ -652,7 +655,7 @@ private:
     }
   }
 
-  std::size_t n_, rows_, pad_;
+  std::size_t n_, page_rows_, rows_, pad_;
   std::size_t used_rows_ = 0;
   Cell_rows atlas_;
   std::vector<long> longest_free_;

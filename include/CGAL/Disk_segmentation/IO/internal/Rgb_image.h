@@ -23,16 +23,20 @@ class Rgb_image
 public:
   typedef std::array<unsigned char, 3> Color;
 
-  explicit Rgb_image(int size) : size_(size), pixels_(std::size_t(size) * std::size_t(size) * 3, 255) {}
+  explicit Rgb_image(int size) : Rgb_image(size, size) {}
+  Rgb_image(int width, int height)
+    : width_(width), height_(height), pixels_(std::size_t(width) * std::size_t(height) * 3, 255)
+  {}
 
-  int size() const { return size_; }
+  int width() const { return width_; }
+  int height() const { return height_; }
   const unsigned char* data() const { return pixels_.data(); }
 
   void set(int x, int y, const Color& c)
   {
-    if(x < 0 || y < 0 || x >= size_ || y >= size_)
+    if(x < 0 || y < 0 || x >= width_ || y >= height_)
       return;
-    unsigned char* p = &pixels_[(std::size_t(y) * std::size_t(size_) + std::size_t(x)) * 3];
+    unsigned char* p = &pixels_[(std::size_t(y) * std::size_t(width_) + std::size_t(x)) * 3];
     p[0] = c[0]; p[1] = c[1]; p[2] = c[2];
   }
 
@@ -46,16 +50,15 @@ public:
     if(!(area != 0) || !std::isfinite(area))
       return;
     const double sign = area > 0 ? 1.0 : -1.0;
-    const double lim = double(size_) + 1.0;
     const double min_x = std::max(-1.0, std::min({ a[0], b[0], c[0] }));
-    const double max_x = std::min(lim, std::max({ a[0], b[0], c[0] }));
+    const double max_x = std::min(double(width_) + 1.0, std::max({ a[0], b[0], c[0] }));
     const double min_y = std::max(-1.0, std::min({ a[1], b[1], c[1] }));
-    const double max_y = std::min(lim, std::max({ a[1], b[1], c[1] }));
+    const double max_y = std::min(double(height_) + 1.0, std::max({ a[1], b[1], c[1] }));
     const int i0 = std::max(0, int(std::ceil(min_x - 0.5)));
-    const int i1 = std::min(size_ - 1, int(std::floor(max_x - 0.5)));
+    const int i1 = std::min(width_ - 1, int(std::floor(max_x - 0.5)));
     const int j0 = std::max(0, int(std::ceil(min_y - 0.5)));
-    const int j1 = std::min(size_ - 1, int(std::floor(max_y - 0.5)));
-    // At most size_^2 pixels: the ranges are clamped to the image.
+    const int j1 = std::min(height_ - 1, int(std::floor(max_y - 0.5)));
+    // At most the image's pixels: the ranges are clamped to it.
     for(int j = j0; j <= j1; ++j)
       for(int i = i0; i <= i1; ++i)
       {
@@ -69,9 +72,9 @@ public:
   // right or bottom border of the image belongs to the last pixel.
   void set_at(const std::array<double, 2>& p, const Color& color)
   {
-    if(!(p[0] >= 0 && p[1] >= 0 && p[0] <= size_ && p[1] <= size_))
+    if(!(p[0] >= 0 && p[1] >= 0 && p[0] <= width_ && p[1] <= height_))
       return;
-    set(std::min(size_ - 1, int(p[0])), std::min(size_ - 1, int(p[1])), color);
+    set(std::min(width_ - 1, int(p[0])), std::min(height_ - 1, int(p[1])), color);
   }
 
   // Draws a 1-pixel line from a to b (pixel coordinates) with a DDA, after
@@ -82,7 +85,7 @@ public:
       return;
     const double dx = b[0] - a[0], dy = b[1] - a[1];
     const double length = std::max(std::fabs(dx), std::fabs(dy));
-    // Clipped to [0, size]^2, so at most about size + 1 steps.
+    // Clipped to the image, so at most about its longer side + 1 steps.
     const long steps = std::max(1L, long(std::ceil(length)));
     for(long k = 0; k <= steps; ++k)
     {
@@ -97,7 +100,7 @@ private:
     return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]);
   }
 
-  // Liang-Barsky clipping of segment [a, b] to [0, size]^2.
+  // Liang-Barsky clipping of segment [a, b] to [0, width] x [0, height].
   bool clip(std::array<double, 2>& a, std::array<double, 2>& b) const
   {
     if(!std::isfinite(a[0]) || !std::isfinite(a[1]) || !std::isfinite(b[0]) || !std::isfinite(b[1]))
@@ -107,7 +110,7 @@ private:
     for(int axis = 0; axis < 2; ++axis)
     {
       const double p[2] = { -d[axis], d[axis] };
-      const double q[2] = { a[axis], double(size_) - a[axis] };
+      const double q[2] = { a[axis], double(axis == 0 ? width_ : height_) - a[axis] };
       for(int k = 0; k < 2; ++k)
       {
         if(p[k] == 0)
@@ -133,7 +136,7 @@ private:
     return true;
   }
 
-  int size_;
+  int width_, height_;
   std::vector<unsigned char> pixels_;
 };
 
