@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Python module disk_uv for the system's python3 and Debian's
 # Blender (which runs on it), and the Blender add-on:
-#   - the Debian packages it needs (scripts/install_dependencies.sh),
+#   - the Debian packages it needs (scripts/install_dependencies.sh --python),
 #   - builds build/python/disk_uv (the package and its compiled part),
 #   - copies it to the system's site-packages (/usr/local/lib/python3.X/
 #     dist-packages as root, the user's site-packages otherwise),
@@ -18,8 +18,8 @@ for arg in "$@"; do
     *) echo "usage: $0 [--no-blender]" >&2; exit 2 ;;
   esac
 done
-bash "$root/scripts/build.sh" -DDISK_SEGMENTATION_BUILD_PYTHON=ON
-cmake --build "$build" --target _disk_uv disk_uv_python_files -j "$(nproc)"
+BUILD_TARGETS="_disk_uv disk_uv_python_files" bash "$root/scripts/build.sh" --python \
+  -DDISK_SEGMENTATION_BUILD_PYTHON=ON -DDISK_SEGMENTATION_BUILD_EXAMPLES=ON -DDISK_SEGMENTATION_BUILD_TESTS=OFF
 
 python=/usr/bin/python3
 if [ "$(id -u)" -eq 0 ]; then
