@@ -98,6 +98,24 @@ def run():
     export_and_check(elephant, folder, "elephant_budget")
     islands = components([uv_ids for _, uv_ids in read_obj(os.path.join(folder, "elephant_budget.obj"))[2]])
     check(len(set(islands)) == 20, "max_charts=20 gave %d UV islands" % len(set(islands)))
+    # The menu's path (invoke): the unwrap runs on a worker thread, Esc
+    # cancels it. The job cancelled at once writes no UV and says so; a job
+    # left to finish reports its progress up to the end.
+    before = loop_uvs(elephant.data).copy()
+    job = disk_uv_unwrap.start_job(bpy.context, [elephant], {"max_charts": 10}, True)
+    job.cancel()
+    job.wait()
+    messages = []
+    result = disk_uv_unwrap.finish_job(bpy.context, job, lambda kind, text: messages.append(text))
+    check(job.cancelled and result == {"CANCELLED"}, "the cancelled job gave %s" % result)
+    check(numpy.array_equal(loop_uvs(elephant.data), before), "a cancelled unwrap changed the UVs")
+    check(any("cancelled: no UV changed" in m for m in messages), "the cancel is not said: %s" % messages)
+    job = disk_uv_unwrap.start_job(bpy.context, [elephant], {"max_charts": 10}, True)
+    job.wait()
+    check(not job.cancelled and job.progress > 0.99, "a finished job: cancelled %s, progress %g"
+          % (job.cancelled, job.progress))
+    check(disk_uv_unwrap.finish_job(bpy.context, job, lambda kind, text: None) == {"FINISHED"}, "finish failed")
+    check(not numpy.array_equal(loop_uvs(elephant.data), before), "the finished job wrote no UV")
     # A fixed texel density, twice the one-tile fit: several UDIM tiles, each
     # chart in one, each tile a valid atlas (the independent checker).
     fit = disk_uv.atlas(*disk_uv.load(os.path.join(DATA, "elephant.off")))

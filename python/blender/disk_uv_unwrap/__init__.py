@@ -11,6 +11,8 @@ triangles (Blender's loop triangles, nothing is changed in the mesh) and
 each triangle's corners write the UVs of their polygon's loops; a polygon
 whose triangles fell into two charts is moved whole into one (see
 disk_uv.atlas(face_groups=...)). Mode and selection are left as they were.
+From the menu the unwrap runs on a worker thread with its progress in the
+status bar: Esc cancels it and no UV changes.
 
 Needs the disk_uv module where Blender's Python finds it
 (scripts/install_python.sh of the Disk_segmentation repository).
@@ -26,6 +28,7 @@ bl_info = {
     "category": "UV",
 }
 
+import threading
 import warnings
 
 import bpy
@@ -125,61 +128,174 @@ class UV_OT_disk_uv_unwrap(bpy.types.Operator):
             return list(context.objects_in_mode_unique_data)
         return [o for o in context.selected_objects if o.type == "MESH"]
 
+    def atlas_options(self):
+        return dict(method=self.method, unbounded=self.unbounded, max_angle_distortion=self.max_angle_distortion,
+                    padding=self.margin, resolution=self.resolution, max_charts=self.max_charts or None,
+                    texels_per_unit=self.texel_density)
+
     def execute(self, context):
-        try:
-            import disk_uv
-        except ImportError:
+        """Unwraps at once (scripts, the redo panel): the UI waits."""
+        job = start_job(context, self.target_objects(context), self.atlas_options(), self.split_by_material)
+        if job is None:
             self.report({"ERROR"}, "the disk_uv Python module is not installed for Blender's Python "
                                    "(run scripts/install_python.sh)")
             return {"CANCELLED"}
-        objects = [o for o in self.target_objects(context) if o.type == "MESH"]
-        mode = context.mode
-        active = context.view_layer.objects.active
-        if mode == "EDIT_MESH":
-            bpy.ops.object.mode_set(mode="OBJECT")  # writes the edit-mode mesh to obj.data
-        done, failed, warned, tiles = 0, [], [], []
+        job.wait()
+        return finish_job(context, job, self.report)
+
+    def invoke(self, context, event):
+        """Unwraps on a worker thread: the UI stays live, Esc cancels and no UV changes."""
+        job = start_job(context, self.target_objects(context), self.atlas_options(), self.split_by_material)
+        if job is None:
+            self.report({"ERROR"}, "the disk_uv Python module is not installed for Blender's Python "
+                                   "(run scripts/install_python.sh)")
+            return {"CANCELLED"}
+        self._job = job
+        self._timer = context.window_manager.event_timer_add(0.1, window=context.window)
+        context.window_manager.progress_begin(0, 100)
+        context.window_manager.modal_handler_add(self)
+        return {"RUNNING_MODAL"}
+
+    def modal(self, context, event):
+        if event.type == "ESC":
+            self._job.cancel()
+        if event.type != "TIMER":
+            return {"RUNNING_MODAL"}
+        context.window_manager.progress_update(int(100 * self._job.progress))
+        if not self._job.done:
+            return {"RUNNING_MODAL"}
+        context.window_manager.event_timer_remove(self._timer)
+        context.window_manager.progress_end()
+        return finish_job(context, self._job, self.report)
+
+
+class UnwrapJob:
+    """The atlases of several objects, computed on a worker thread.
+
+    Only arrays cross to the thread (bpy is not thread-safe); the UVs are
+    written by finish_job() on Blender's thread. cancel() stops the work at
+    the module's next progress report; nothing is written then.
+    """
+
+    def __init__(self, tasks, options):
+        self.tasks = tasks  # (object name, vertices, triangles, loops, polygons, materials)
+        self.options = options
+        self.results = []  # (object name, loops, atlas)
+        self.failed, self.warned = [], []
+        self.cancelled = False
+        self.done = False
+        self.progress = 0.0
+        self._stop = threading.Event()
+        self._thread = threading.Thread(target=self._run, name="disk_uv unwrap", daemon=True)
+
+    def start(self):
+        self._thread.start()
+
+    def cancel(self):
+        self._stop.set()
+
+    def wait(self):
+        self._thread.join()
+
+    def _run(self):
+        import disk_uv
         try:
-            for obj in objects:
-                vertices, triangles, loops, polygons = mesh_arrays(obj, selected_only=(mode == "EDIT_MESH"))
-                if len(triangles) == 0:
-                    failed.append("%s: no %sfaces" % (obj.name, "selected " if mode == "EDIT_MESH" else ""))
-                    continue
-                materials = None
-                if self.split_by_material and len(obj.data.materials) > 1:
-                    material_of_polygon = numpy.empty(len(obj.data.polygons), dtype=numpy.int64)
-                    obj.data.polygons.foreach_get("material_index", material_of_polygon)
-                    materials = material_of_polygon[polygons]
+            for index, (name, vertices, triangles, loops, polygons, materials) in enumerate(self.tasks):
+                def progress(stage, done, total, index=index):
+                    stages = ("segmentation", "parameterization", "packing")
+                    part = (stages.index(stage) + done / max(total, 1)) / 3 if stage in stages else 0
+                    self.progress = (index + part) / len(self.tasks)
+                    return not self._stop.is_set()
                 try:
+                    # One worker: the filter it sets is not raced by another.
                     with warnings.catch_warnings(record=True) as caught:
                         warnings.simplefilter("always", RuntimeWarning)
-                        atlas = disk_uv.atlas(vertices, triangles, method=self.method, unbounded=self.unbounded,
-                                              max_angle_distortion=self.max_angle_distortion,
-                                              padding=self.margin, resolution=self.resolution,
-                                              max_charts=self.max_charts or None, face_groups=polygons,
-                                              materials=materials, texels_per_unit=self.texel_density)
+                        atlas = disk_uv.atlas(vertices, triangles, face_groups=polygons, materials=materials,
+                                              progress=progress, **self.options)
+                except disk_uv.Cancelled:
+                    self.cancelled = True
+                    return
                 except ValueError as error:
-                    failed.append("%s: %s" % (obj.name, str(error).replace("texels_per_unit", "texel density")))
+                    self.failed.append("%s: %s" % (name, str(error).replace("texels_per_unit", "texel density")))
                     continue
                 for warning in caught:
-                    # The module names its keyword; the panel calls the padding "Margin".
+                    # The module names its keywords; the panel calls them "Margin" and "Texel density".
                     message = str(warning.message).replace("padding", "margin")
-                    warned.append("%s: %s" % (obj.name, message.replace("texels_per_unit", "texel density")))
-                # Several pages go to UDIM tiles 1001, 1002, ..., as Blender's tiled images read them.
-                write_uvs(obj.data, loops, atlas.udim_uvs() if atlas.number_of_pages > 1 else atlas.uvs)
-                if atlas.number_of_pages > 1:
-                    tiles.append("%s: %d UDIM tiles" % (obj.name, atlas.number_of_pages))
-                done += 1
+                    self.warned.append("%s: %s" % (name, message.replace("texels_per_unit", "texel density")))
+                self.results.append((name, loops, atlas))
+            self.cancelled = self._stop.is_set()
         finally:
-            if mode == "EDIT_MESH":
-                context.view_layer.objects.active = active
-                bpy.ops.object.mode_set(mode="EDIT")
-        for message in failed + warned:
-            self.report({"WARNING"}, message)
-        if done == 0:
-            self.report({"ERROR"}, "no mesh unwrapped")
-            return {"CANCELLED"}
-        self.report({"INFO"}, "Disk UV Unwrap: %d mesh(es) unwrapped%s" % (done, "".join("; " + t for t in tiles)))
-        return {"FINISHED"}
+            self.done = True
+
+
+def start_job(context, objects, options, split_by_material):
+    """Reads the objects' arrays (in object mode, back to the mode it was
+    in) and starts their unwrap on a worker thread; None without disk_uv."""
+    try:
+        import disk_uv  # noqa: F401
+    except ImportError:
+        return None
+    objects = [o for o in objects if o.type == "MESH"]
+    mode = context.mode
+    active = context.view_layer.objects.active
+    if mode == "EDIT_MESH":
+        bpy.ops.object.mode_set(mode="OBJECT")  # writes the edit-mode mesh to obj.data
+    tasks, empty = [], []
+    try:
+        for obj in objects:
+            vertices, triangles, loops, polygons = mesh_arrays(obj, selected_only=(mode == "EDIT_MESH"))
+            if len(triangles) == 0:
+                empty.append("%s: no %sfaces" % (obj.name, "selected " if mode == "EDIT_MESH" else ""))
+                continue
+            materials = None
+            if split_by_material and len(obj.data.materials) > 1:
+                material_of_polygon = numpy.empty(len(obj.data.polygons), dtype=numpy.int64)
+                obj.data.polygons.foreach_get("material_index", material_of_polygon)
+                materials = material_of_polygon[polygons]
+            tasks.append((obj.name, vertices, triangles, loops, polygons, materials))
+    finally:
+        if mode == "EDIT_MESH":
+            context.view_layer.objects.active = active
+            bpy.ops.object.mode_set(mode="EDIT")
+    job = UnwrapJob(tasks, options)
+    job.failed.extend(empty)
+    job.start()
+    return job
+
+
+def finish_job(context, job, report):
+    """Writes the UVs of a finished job, all of them or, if it was
+    cancelled, none; reports through `report` (an operator's)."""
+    if job.cancelled:
+        report({"WARNING"}, "Disk UV Unwrap cancelled: no UV changed")
+        return {"CANCELLED"}
+    edit_mode = context.mode == "EDIT_MESH"
+    active = context.view_layer.objects.active
+    if edit_mode:
+        bpy.ops.object.mode_set(mode="OBJECT")
+    tiles, written = [], 0
+    try:
+        for name, loops, atlas in job.results:
+            obj = bpy.data.objects.get(name)
+            if obj is None or obj.type != "MESH":
+                job.failed.append("%s: the object is gone" % name)
+                continue
+            # Several pages go to UDIM tiles 1001, 1002, ..., as Blender's tiled images read them.
+            write_uvs(obj.data, loops, atlas.udim_uvs() if atlas.number_of_pages > 1 else atlas.uvs)
+            written += 1
+            if atlas.number_of_pages > 1:
+                tiles.append("%s: %d UDIM tiles" % (name, atlas.number_of_pages))
+    finally:
+        if edit_mode:
+            context.view_layer.objects.active = active
+            bpy.ops.object.mode_set(mode="EDIT")
+    for message in job.failed + job.warned:
+        report({"WARNING"}, message)
+    if written == 0:
+        report({"ERROR"}, "no mesh unwrapped")
+        return {"CANCELLED"}
+    report({"INFO"}, "Disk UV Unwrap: %d mesh(es) unwrapped%s" % (written, "".join("; " + t for t in tiles)))
+    return {"FINISHED"}
 
 
 def menu_entry(self, context):
