@@ -60,7 +60,7 @@ from ._files import remove_stale_temporaries, remove_temporaries, write_atomical
 
 MESH_EXTENSIONS = (".off", ".obj", ".ply", ".stl", ".ts")
 SUMMARY_FIELDS = ("mesh", "status", "faces", "charts", "angle_distortion", "area_distortion",
-                  "packing_efficiency", "seconds", "error")
+                  "packing_efficiency", "pages", "seconds", "error")
 # Signals that stop a mesh's process from outside (not its fault: a rerun does it).
 STOP_SIGNALS = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP)
 # The first line of the OBJ files the batch writes (the C++ writer's).
@@ -203,6 +203,7 @@ def summary_row(name, status, report=None, seconds=None, error=""):
                    angle_distortion=sum(c["faces"] * c["angle_distortion"] for c in charts) / faces,
                    area_distortion=sum(c["faces"] * c["area_distortion"] for c in charts) / faces,
                    packing_efficiency=report["packing"]["efficiency"],
+                   pages=report["packing"].get("pages", 1),
                    seconds=report["seconds"]["read"] + report["seconds"]["total"] if seconds is None else seconds)
     return row
 
@@ -465,7 +466,8 @@ def add_atlas_arguments(parser):
     group = parser.add_argument_group("atlas options (as the disk_uv tool's)")
     group.add_argument("--method", default=d.default_parameterization_method,
                        choices=disk_uv.METHODS)
-    group.add_argument("--resolution", type=int, default=1024)
+    group.add_argument("--resolution", type=_texture_size, default=1024, metavar="N|WxH",
+                       help="texture side in texels, or WIDTHxHEIGHT for a non-square texture")
     group.add_argument("--padding", type=float, default=2.0)
     group.add_argument("--texels-per-unit", type=float, default=0.0,
                        help="fixed texel density; the charts fill as many pages as they need, written as UDIM "
@@ -483,6 +485,14 @@ def add_atlas_arguments(parser):
     group.add_argument("--threads", type=int, default=1, help="threads per mesh (default 1: one mesh per core)")
     group.add_argument("--repair", action="store_true", help="repair each mesh's soup before the atlas")
     group.add_argument("--triangulate", action="store_true", help="triangulate polygons")
+
+
+def _texture_size(text):
+    """N or WxH (non-negative integers), as the disk_uv tool reads --resolution."""
+    sides = text.split("x")
+    if len(sides) > 2 or not all(side.isdigit() for side in sides):
+        raise argparse.ArgumentTypeError("expected a non-negative integer or WIDTHxHEIGHT, not %r" % text)
+    return int(sides[0]) if len(sides) == 1 else (int(sides[0]), int(sides[1]))
 
 
 def _seconds(text):

@@ -131,6 +131,10 @@ def run():
     check(len(tiles) >= 2 and tiles == list(range(1001, 1001 + len(tiles))),
           "texel density %g gave the UDIM tiles %s" % (density, tiles))
     print("checked elephant at", density, "texels per unit:", len(tiles), "UDIM tiles")
+    # A non-square texture: a valid atlas, wider than high in texels.
+    check(bpy.ops.uv.disk_uv_unwrap(resolution=2048, resolution_height=512) == {"FINISHED"},
+          "unwrap on a 2048 x 512 texture failed")
+    export_and_check(elephant, folder, "elephant_wide")
     # A texture too small for the margin: unwrapped all the same (the operator warns).
     check(bpy.ops.uv.disk_uv_unwrap(resolution=32) == {"FINISHED"}, "unwrap on a small texture failed")
     export_and_check(elephant, folder, "elephant_small_texture")

@@ -98,6 +98,16 @@ def test_manifest_and_bad_arguments(tmp_path):
     assert batch(str(tmp_path / "missing"), str(out)).returncode == 2
     wrong = batch(str(manifest), str(out), "--method", "arap", "--resolution", "-3")
     assert wrong.returncode == 2 and "resolution" in wrong.stderr
+    wrong = batch(str(manifest), str(out), "--resolution", "512x")
+    assert wrong.returncode == 2 and "WIDTHxHEIGHT" in wrong.stderr
+    # A non-square texture and pages at a fixed density reach the module.
+    wide = batch(str(manifest), str(tmp_path / "wide"), "--resolution", "2048x512", "--texels-per-unit", "0",
+                 "--workers", "1")
+    assert wide.returncode == 0 and summary(tmp_path / "wide")["eight"]["status"] == "ok", wide.stderr
+    report = json.loads((tmp_path / "wide" / "eight.json").read_text())
+    assert report["packing"]["pages"] == 1 and summary(tmp_path / "wide")["eight"]["pages"] == "1"
+    wrong = batch(str(manifest), str(out), "--texels-per-unit", "-1")
+    assert wrong.returncode == 2 and "error: --texels-per-unit must be" in wrong.stderr, wrong.stderr
     # The flags as typed, not the module's keywords or the library's parameters.
     wrong = batch(str(manifest), str(out), "--max-stretch", "0.5")
     assert wrong.returncode == 2 and "error: --max-stretch must be > 1" in wrong.stderr, wrong.stderr

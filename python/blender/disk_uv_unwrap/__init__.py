@@ -113,6 +113,9 @@ class UV_OT_disk_uv_unwrap(bpy.types.Operator):
                           default=2.0, min=0.0, soft_max=16.0)
     resolution: IntProperty(name="Resolution", description="Texture side in texels the margin refers to",
                             default=1024, min=16, max=65536)
+    resolution_height: IntProperty(
+        name="Height", description="Height in texels of a non-square texture, Resolution its width (0: square)",
+        default=0, min=0, max=65536)
     texel_density: FloatProperty(
         name="Texel density", description="Texels per unit of length, fixed: the charts fill as many UDIM tiles of "
                                           "Resolution texels as they need (0: the largest that fits one tile)",
@@ -130,7 +133,9 @@ class UV_OT_disk_uv_unwrap(bpy.types.Operator):
 
     def atlas_options(self):
         return dict(method=self.method, unbounded=self.unbounded, max_angle_distortion=self.max_angle_distortion,
-                    padding=self.margin, resolution=self.resolution, max_charts=self.max_charts or None,
+                    padding=self.margin,
+                    resolution=(self.resolution, self.resolution_height) if self.resolution_height else self.resolution,
+                    max_charts=self.max_charts or None,
                     texels_per_unit=self.texel_density)
 
     def execute(self, context):
