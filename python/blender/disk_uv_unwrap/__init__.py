@@ -220,7 +220,7 @@ class UnwrapJob:
                 except disk_uv.Cancelled:
                     self.cancelled = True
                     return
-                except ValueError as error:
+                except Exception as error:  # a bad mesh or option: said, and the next object goes on
                     self.failed.append("%s: %s" % (name, str(error).replace("texels_per_unit", "texel density")))
                     continue
                 for warning in caught:
