@@ -14,7 +14,7 @@
 // once, kills a child that passes --time-limit seconds, and writes
 // OUT_DIR/quality_per_mesh.csv (one row per case, in mesh, segmentation,
 // method order whatever --jobs is) and OUT_DIR/quality_table.md (the paper's
-// layout; see benchmark/Disk_segmentation/README.md and METRICS.md).
+// layout; see benchmark/Disk_segmentation/README.md and Atlas_quality).
 //
 // The parent never calls the library (and so never starts TBB threads),
 // which keeps fork() safe: each child starts from a single-threaded process.
@@ -1083,7 +1083,7 @@ void write_markdown(const fs::path& path, const Options& o, const std::vector<fs
       << " s per case (mesh x segmentation x method), " << o.seeds
       << " seeds for `voronoi` and `ours`, TIGHT packing, texture resolution " << o.texture_resolution
       << ". Total wall time " << fixed(total_seconds, 0) << " s.\n\n";
-  out << "**Distortion variant: the benchmark's** (Shay, Solomon & Stein 2022; see the project's METRICS.md and "
+  out << "**Distortion variant: the benchmark's** (Shay, Solomon & Stein 2022; see the manual's Quality Metrics and "
          "`Atlas_quality` in include/CGAL/Disk_segmentation/atlas_quality.h): per triangle "
          "with Jacobian singular values s1 >= s2, area dist. = s1 s2 + 1/(s1 s2) - 2 and angle dist. = "
          "s1/s2 + s2/s1 - 2, area-weighted means over the non-flipped, non-degenerate faces. **Area distortion is "
@@ -1268,7 +1268,7 @@ int main(int argc, char** argv)
   o.machine_note = "2-core shared VM";
 
   CLI::App app{ "Atlas quality of several segmentations and parameterization methods on a folder of meshes, "
-                "in the layout of Table 1 of the paper (see METRICS.md)." };
+                "in the layout of Table 1 of the paper (metrics: Atlas_quality in atlas_quality.h)." };
   app.add_option("MESH_DIR", o.mesh_dir, "folder of meshes (.off .obj .ply .stl), read in sorted name order")
     ->required()
     ->check(CLI::ExistingDirectory);

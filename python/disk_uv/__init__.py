@@ -146,10 +146,12 @@ def atlas(vertices, faces=None, method=_disk_uv.default_parameterization_method,
           max_area_scale=_disk_uv.default_max_area_scale,
           max_stretch_p95=_disk_uv.default_max_stretch_p95,
           min_convexity=_disk_uv.default_min_convexity,
-          unbounded=False, rough_borders=False, resolution=1024, padding=2.0, threads=0, seed=None,
-          n=10, k=5, threshold=_disk_uv.default_merge_threshold, packer="tight",
+          unbounded=False, rough_borders=False, resolution=_disk_uv.default_texture_resolution,
+          padding=_disk_uv.default_padding, threads=0, seed=None,
+          n=_disk_uv.default_number_of_seeds, k=_disk_uv.default_number_of_subsamples,
+          threshold=_disk_uv.default_merge_threshold, packer="tight",
           max_chart_faces=_disk_uv.default_max_chart_faces, use_fallback=True, max_charts=None, face_groups=None,
-          materials=None, progress=None, texels_per_unit=0.0, max_pages=64):
+          materials=None, progress=None, texels_per_unit=0.0, max_pages=_disk_uv.default_max_pages):
     """UV atlas of a triangle mesh; the options are those of the ``disk_uv`` tool.
 
     ``atlas([(vertices, faces), ...])`` makes one atlas for several meshes
@@ -252,7 +254,8 @@ def parametrize(vertices, faces, **options):
     return atlas(vertices, faces, **options).xatlas_arrays()
 
 
-def segment(vertices, faces, n=10, k=5, threshold=_disk_uv.default_merge_threshold, progress=None):
+def segment(vertices, faces, n=_disk_uv.default_number_of_seeds, k=_disk_uv.default_number_of_subsamples,
+            threshold=_disk_uv.default_merge_threshold, progress=None):
     """The paper's segmentation into topological disks: (F,) uint32 patch ids.
 
     Joint farthest-point sampling of ``n`` seeds and geodesic Voronoi cells,

@@ -466,13 +466,13 @@ def add_atlas_arguments(parser):
     group = parser.add_argument_group("atlas options (as the disk_uv tool's)")
     group.add_argument("--method", default=d.default_parameterization_method,
                        choices=disk_uv.METHODS)
-    group.add_argument("--resolution", type=_texture_size, default=1024, metavar="N|WxH",
+    group.add_argument("--resolution", type=_texture_size, default=d.default_texture_resolution, metavar="N|WxH",
                        help="texture side in texels, or WIDTHxHEIGHT for a non-square texture")
-    group.add_argument("--padding", type=float, default=2.0)
+    group.add_argument("--padding", type=float, default=d.default_padding)
     group.add_argument("--texels-per-unit", type=float, default=0.0,
                        help="fixed texel density; the charts fill as many pages as they need, written as UDIM "
                             "tiles (0: fit one page)")
-    group.add_argument("--max-pages", type=int, default=64, help="most pages --texels-per-unit may fill")
+    group.add_argument("--max-pages", type=int, default=d.default_max_pages, help="most pages --texels-per-unit may fill")
     group.add_argument("--max-angle-distortion", type=float, default=d.default_max_angle_distortion)
     group.add_argument("--max-area-distortion", type=float, default=d.default_max_area_distortion)
     group.add_argument("--max-stretch", type=float, default=d.default_max_stretch)
@@ -488,11 +488,12 @@ def add_atlas_arguments(parser):
 
 
 def _texture_size(text):
-    """N or WxH (non-negative integers), as the disk_uv tool reads --resolution."""
-    sides = text.split("x")
-    if len(sides) > 2 or not all(side.isdigit() for side in sides):
+    """N or WxH (non-negative integers), read by the disk_uv tool's own parser."""
+    import disk_uv
+    size = disk_uv._disk_uv.parse_texture_size(text)
+    if size is None:
         raise argparse.ArgumentTypeError("expected a non-negative integer or WIDTHxHEIGHT, not %r" % text)
-    return int(sides[0]) if len(sides) == 1 else (int(sides[0]), int(sides[1]))
+    return size
 
 
 def _seconds(text):

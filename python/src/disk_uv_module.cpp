@@ -15,9 +15,9 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
-#include "atlas_report_json.h"
-#include "mesh_io.h"
-#include "parameter_names.h"
+#include <CGAL/Disk_segmentation/IO/Atlas_options.h>
+#include <CGAL/Disk_segmentation/IO/atlas_report_JSON.h>
+#include <CGAL/Disk_segmentation/IO/read_triangle_mesh.h>
 
 #include <algorithm>
 #include <array>
@@ -169,7 +169,7 @@ Soup soup_from_arrays(const py::handle& vertices_object, const py::handle& faces
       soup.faces[i][j] = static_cast<std::size_t>(index);
     }
   }
-  std::string problem = disk_uv::triangle_soup_problem(soup.points, soup.faces, &soup.pinched_vertices_split);
+  std::string problem = DS::IO::internal::triangle_soup_problem(soup.points, soup.faces, &soup.pinched_vertices_split);
   if(!problem.empty())
   {
     // The check was written for files.
@@ -397,55 +397,39 @@ std::vector<std::int64_t> face_values(const py::dict& o, const char* name, const
   return values;
 }
 
-// The options of atlas() as the library's named parameters, checked.
+// The options of atlas() as the library's named parameters, checked (the
+// mapping the disk_uv tool uses too: IO/Atlas_options.h).
 auto atlas_settings(const py::dict& o, std::string& method_name, std::string& packer_name)
 {
-  bool unbounded = false;
-  const DS::Distortion_bound bound = bound_from(o, unbounded);
-  method_name = choice_option(o, "method", "arap, conformal, lscm, mvc or tutte");
-  packer_name = choice_option(o, "packer", "tight or grid");
-  DS::Parameterization_method method;
-  try
-  {
-    method = DS::parameterization_method_from_string(method_name);
-  }
-  catch(const DS::Input_error& e)
-  {
-    throw Bad_argument(std::string("method: ") + e.what());
-  }
-  DS::Packing_method packer;
-  if(packer_name == "tight") packer = DS::Packing_method::TIGHT;
-  else if(packer_name == "grid") packer = DS::Packing_method::GRID;
-  else throw Bad_argument("packer: unknown packer '" + packer_name + "' (expected tight or grid)");
-  std::size_t resolution = 0, height = 0;
-  texture_size_option(o, resolution, height);
+  DS::IO::Atlas_options options;
+  options.bound = bound_from(o, options.unbounded);
+  method_name = options.method = choice_option(o, "method", "arap, conformal, lscm, mvc or tutte");
+  packer_name = options.packer = choice_option(o, "packer", "tight or grid");
+  std::size_t width = 0, height = 0;
+  texture_size_option(o, width, height);
+  options.texture_width = static_cast<unsigned int>(width);
+  options.texture_height = static_cast<unsigned int>(height);
   const std::size_t threads = count_option(o, "threads");
   if(threads > 4096)
     throw Bad_argument("threads must be at most 4096");
+  options.number_of_threads = static_cast<unsigned int>(threads);
   // None: no chart budget.
-  const std::size_t max_charts =
-    o["max_charts"].is_none() ? DS::internal::no_chart_budget : count_option(o, "max_charts");
-  if(max_charts == 0)
-    throw Bad_argument("max_charts must be None or at least 1");
-  const double inf = std::numeric_limits<double>::infinity();
-  const auto settings =
-    DS::parameters::number_of_seeds(count_option(o, "n")).number_of_subsamples(count_option(o, "k"))
-      .merge_threshold(real_option(o, "threshold")).parameterization_method(method)
-      .use_fallback(o["use_fallback"].cast<bool>())
-      .max_angle_distortion(unbounded ? inf : bound.max_angle_distortion)
-      .max_area_distortion(unbounded ? inf : bound.max_area_distortion)
-      .max_stretch(unbounded ? inf : bound.max_stretch).max_area_scale(unbounded ? inf : bound.max_area_scale)
-      .max_stretch_p95(unbounded ? inf : bound.max_stretch_p95)
-      .min_convexity(unbounded ? 0. : bound.min_convexity)
-      .smooth_borders(!o["rough_borders"].cast<bool>())
-      .straighten_borders(!o["rough_borders"].cast<bool>())
-      .max_chart_faces(count_option(o, "max_chart_faces")).max_number_of_charts(max_charts).packing_method(packer)
-      .texture_resolution(static_cast<unsigned int>(resolution)).texture_height(static_cast<unsigned int>(height))
-      .padding_in_texels(real_option(o, "padding"))
-      .texels_per_unit(real_option(o, "texels_per_unit")).max_number_of_pages(count_option(o, "max_pages"))
-      .number_of_threads(static_cast<unsigned int>(threads));
-  DS::check_uv_atlas_parameters(settings);
-  return settings;
+  if(!o["max_charts"].is_none())
+  {
+    options.max_number_of_charts = count_option(o, "max_charts");
+    if(options.max_number_of_charts == 0)
+      throw Bad_argument("max_charts must be None or at least 1");
+  }
+  options.number_of_seeds = count_option(o, "n");
+  options.number_of_subsamples = count_option(o, "k");
+  options.merge_threshold = real_option(o, "threshold");
+  options.use_fallback = o["use_fallback"].cast<bool>();
+  options.rough_borders = o["rough_borders"].cast<bool>();
+  options.max_chart_faces = count_option(o, "max_chart_faces");
+  options.padding_in_texels = real_option(o, "padding");
+  options.texels_per_unit = real_option(o, "texels_per_unit");
+  options.max_number_of_pages = count_option(o, "max_pages");
+  return DS::IO::atlas_parameters(options);
 }
 
 py::dict run_atlas(const py::handle& vertices, const py::handle& faces, const py::dict& o)
@@ -487,10 +471,10 @@ py::dict run_atlas(const py::handle& vertices, const py::handle& faces, const py
     else
       report = DS::uv_atlas(mesh, uv, with_maps.progress_callback(keep_going));
   });
-  disk_uv::Read_changes changes;
+  DS::IO::Read_changes changes;
   changes.pinched_vertices_split = soup.pinched_vertices_split;
   nlohmann::json json =
-    disk_uv::atlas_report_json("<arrays>", mesh.number_of_vertices(), report, method_name, packer_name, 0., changes);
+    DS::IO::atlas_report_json("<arrays>", mesh.number_of_vertices(), report, method_name, packer_name, 0., changes);
   return atlas_result(soup, mesh, patch, uv, json.dump());
 }
 
@@ -555,9 +539,9 @@ py::list run_atlas_of_meshes(const py::sequence& parts, const py::dict& o)
   {
     DS::Atlas_report r = report.meshes[i];
     r.packing = report.packing;  // the common packing
-    disk_uv::Read_changes changes;
+    DS::IO::Read_changes changes;
     changes.pinched_vertices_split = soups[i].pinched_vertices_split;
-    nlohmann::json json = disk_uv::atlas_report_json("<arrays>", meshes[i].number_of_vertices(), r, method_name,
+    nlohmann::json json = DS::IO::atlas_report_json("<arrays>", meshes[i].number_of_vertices(), r, method_name,
                                                      packer_name, 0., changes);
     json["first_chart"] = report.first_chart[i];
     json["total_charts"] = report.first_chart.back();
@@ -637,13 +621,13 @@ py::tuple xatlas_arrays(const py::handle& faces_object, const py::handle& uvs_ob
 // A mesh read by the C++ tool's readers, as (vertices, faces) arrays.
 py::tuple load_mesh(const std::string& path, bool repair, bool triangulate)
 {
-  disk_uv::Read_options options;
+  DS::IO::Read_options options;
   options.repair = repair;
   options.triangulate = triangulate;
   Mesh mesh;
   {
     py::gil_scoped_release release;
-    disk_uv::read_triangle_mesh(path, mesh, options);
+    DS::IO::read_triangle_mesh(path, mesh, options);
   }
   py::array_t<double> vertices({ py::ssize_t(mesh.number_of_vertices()), py::ssize_t(3) });
   py::array_t<std::int64_t> faces({ py::ssize_t(mesh.number_of_faces()), py::ssize_t(3) });
@@ -726,9 +710,9 @@ PYBIND11_MODULE(_disk_uv, m)
     catch(const DS::Input_error& e)
     {
       PyErr_SetString(PyExc_ValueError,
-                      as_utf8(disk_uv::in_user_terms(e.what(), disk_uv::Front_end::python)).c_str());
+                      as_utf8(DS::IO::in_user_terms(e.what(), DS::IO::Front_end::python)).c_str());
     }
-    catch(const disk_uv::Tool_error& e)
+    catch(const DS::IO::File_error& e)
     {
       PyErr_SetString(PyExc_ValueError, as_utf8(e.what()).c_str());
     }
@@ -737,11 +721,25 @@ PYBIND11_MODULE(_disk_uv, m)
   m.def("atlas_of_meshes", &run_atlas_of_meshes, py::arg("meshes"), py::arg("options"));
   m.def("segment", &run_segment, py::arg("vertices"), py::arg("faces"), py::arg("options"));
   m.def("xatlas_arrays", &xatlas_arrays, py::arg("faces"), py::arg("uvs"), py::arg("chart_ids"));
+  // "N" -> N, "WxH" -> (W, H), anything else -> None: the tool's --resolution.
+  m.def("parse_texture_size", [](const std::string& text) -> py::object {
+    unsigned int width = 0, height = 0;
+    if(!DS::IO::parse_texture_size(text, width, height))
+      return py::none();
+    if(text.find('x') == std::string::npos)
+      return py::int_(width);
+    return py::make_tuple(width, height);
+  }, py::arg("text"));
   m.def("load", &load_mesh, py::arg("path"), py::arg("repair"), py::arg("triangulate"));
   m.def("atlas_file", &atlas_file, py::arg("format"), py::arg("vertices"), py::arg("faces"), py::arg("uvs"),
         py::arg("chart_ids"));
   m.attr("default_parameterization_method") = DS::to_string(DS::default_parameterization_method);
-  m.attr("default_merge_threshold") = DS::regular_polygon_threshold(5);
+  m.attr("default_merge_threshold") = DS::regular_polygon_threshold(DS::default_merge_threshold_sides);
+  m.attr("default_number_of_seeds") = DS::default_number_of_seeds;
+  m.attr("default_number_of_subsamples") = DS::default_number_of_subsamples;
+  m.attr("default_texture_resolution") = DS::default_texture_resolution;
+  m.attr("default_padding") = DS::default_padding_in_texels;
+  m.attr("default_max_pages") = DS::default_max_number_of_pages;
   m.attr("default_max_chart_faces") = DS::default_max_chart_faces;
   const DS::Distortion_bound bound;
   m.attr("default_max_angle_distortion") = bound.max_angle_distortion;

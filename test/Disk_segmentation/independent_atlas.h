@@ -16,7 +16,8 @@
 // corner k). All checks then run on the soup, so OBJ files can be checked
 // the same way (check_obj_atlas).
 //
-// Definitions (see /work/shared/METRICS.md)
+// Definitions (those of the manual's Quality Metrics section and of
+// Atlas_quality in atlas_quality.h, restated here for the checker)
 //   corners_non_finite          corners (face, k) with a NaN/inf coordinate.
 //   corners_outside_unit_square finite corners outside [-1e-9, 1+1e-9]^2.
 //   flipped                     faces whose UV corners, in face order, make a
@@ -1226,8 +1227,8 @@ inline std::vector<std::size_t> obj_patches_from_groups(const Obj_data& obj)
 
 // Chart id per OBJ triangle: faces joined across every edge on which both
 // faces give the same UV values (exact comparison, not vt indices) to both
-// endpoints, i.e. across every edge that is not a seam in the sense of
-// METRICS.md; ids in order of first face. Corners without vt join nothing.
+// endpoints, i.e. across every edge that is not a seam (a cut in the sense
+// of Atlas_quality::cut_length); ids in order of first face. Corners without vt join nothing.
 inline std::vector<std::size_t> obj_patches_from_uv_connectivity(const Obj_data& obj)
 {
   const std::size_t F = obj.face_v.size();

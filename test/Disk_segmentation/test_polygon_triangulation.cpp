@@ -4,7 +4,7 @@
 // a fan; self-crossing and degenerate polygons end in a fan, not a hang.
 // Checked with shoelace areas and point-in-polygon tests written here.
 
-#include "polygon_triangulation.h"
+#include <CGAL/Disk_segmentation/IO/internal/Polygon_triangulation.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
@@ -88,7 +88,7 @@ TEST(PolygonTriangulation, LShapedHexagonWithoutFan)
 {
   const Planar_polygon p = place({ 0, 2, 2, 1, 1, 0 }, { 0, 0, 1, 1, 2, 2 }, 0.3, 5);
   bool used_fan = true;
-  const Triangles t = disk_uv::triangulate_polygon(p.points, p.corners, used_fan);
+  const Triangles t = CGAL::Disk_segmentation::IO::internal::triangulate_polygon(p.points, p.corners, used_fan);
   EXPECT_FALSE(used_fan);
   expect_exact_cover(p, t);
 }
@@ -110,7 +110,7 @@ TEST(PolygonTriangulation, RandomStarShapedPolygonsAreCoveredExactly)
     const Planar_polygon p = place(x, y, tilt(random), trial * 1e3);
     SCOPED_TRACE("trial " + std::to_string(trial));
     bool used_fan = true;
-    const Triangles t = disk_uv::triangulate_polygon(p.points, p.corners, used_fan);
+    const Triangles t = CGAL::Disk_segmentation::IO::internal::triangulate_polygon(p.points, p.corners, used_fan);
     EXPECT_FALSE(used_fan);
     expect_exact_cover(p, t);
   }
@@ -121,7 +121,7 @@ TEST(PolygonTriangulation, ClockwisePolygonKeepsItsOrientation)
   // The L-hexagon listed clockwise: every triangle is clockwise too.
   const Planar_polygon p = place({ 0, 0, 1, 1, 2, 2 }, { 0, 2, 2, 1, 1, 0 }, 0, 0);
   bool used_fan = true;
-  const Triangles t = disk_uv::triangulate_polygon(p.points, p.corners, used_fan);
+  const Triangles t = CGAL::Disk_segmentation::IO::internal::triangulate_polygon(p.points, p.corners, used_fan);
   EXPECT_FALSE(used_fan);
   ASSERT_EQ(t.size(), 4u);
   for(const auto& triangle : t)
@@ -141,7 +141,7 @@ TEST(PolygonTriangulation, SelfCrossingAndDegeneratePolygonsEndInAFan)
   for(int i = 0; i < 120; ++i)
     crossing.push_back(std::size_t(random() % 8));
   bool used_fan = false;
-  Triangles t = disk_uv::triangulate_polygon(points, crossing, used_fan);
+  Triangles t = CGAL::Disk_segmentation::IO::internal::triangulate_polygon(points, crossing, used_fan);
   EXPECT_EQ(t.size(), 118u);
   for(const auto& triangle : t)
     for(std::size_t v : triangle)
@@ -151,20 +151,20 @@ TEST(PolygonTriangulation, SelfCrossingAndDegeneratePolygonsEndInAFan)
   std::vector<Point> line;
   for(int i = 0; i < 6; ++i)
     line.emplace_back(i, 2 * i, 3 * i);
-  t = disk_uv::triangulate_polygon(line, { 0, 1, 2, 3, 4, 5 }, used_fan);
+  t = CGAL::Disk_segmentation::IO::internal::triangulate_polygon(line, { 0, 1, 2, 3, 4, 5 }, used_fan);
   EXPECT_EQ(t.size(), 4u);
   EXPECT_TRUE(used_fan);
 
   // Too many corners for ear clipping: a fan, with the right count.
   std::vector<Point> circle;
   std::vector<std::size_t> all;
-  for(std::size_t i = 0; i < disk_uv::max_ear_clipped_corners + 1; ++i)
+  for(std::size_t i = 0; i < CGAL::Disk_segmentation::IO::internal::max_ear_clipped_corners + 1; ++i)
   {
-    const double a = 2 * M_PI * double(i) / double(disk_uv::max_ear_clipped_corners + 1);
+    const double a = 2 * M_PI * double(i) / double(CGAL::Disk_segmentation::IO::internal::max_ear_clipped_corners + 1);
     circle.emplace_back(std::cos(a), std::sin(a), 0);
     all.push_back(i);
   }
-  t = disk_uv::triangulate_polygon(circle, all, used_fan);
+  t = CGAL::Disk_segmentation::IO::internal::triangulate_polygon(circle, all, used_fan);
   EXPECT_EQ(t.size(), all.size() - 2);
   EXPECT_TRUE(used_fan);
 }

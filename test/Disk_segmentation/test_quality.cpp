@@ -1,6 +1,6 @@
 // Tests of atlas_quality() on hand-built atlases. Every expected value is
-// derived by hand in the comments (see ../../../shared/METRICS.md for the
-// definitions); none is computed with the library's internals.
+// derived by hand in the comments (the definitions are those of
+// Atlas_quality in atlas_quality.h); none is computed with the library's internals.
 //
 // Conventions used below (test_meshes.h):
 //  * grid_with_holes(nx, ny, 0): point (i, j) has index j*(nx+1) + i; square
@@ -90,7 +90,8 @@ struct Atlas
   DS::Atlas_quality quality(const NamedParameters& np) const { return DS::atlas_quality(mesh, uv, patch, np); }
 };
 
-// Every distortion at its ideal value (see the tables of METRICS.md).
+// Every distortion at its ideal value (0 for the differences, 1 for the
+// ratios, 2 for the benchmark's symmetric Dirichlet).
 void expect_no_distortion(const DS::Atlas_quality& q)
 {
   EXPECT_NEAR(q.angle_distortion.mean, 0, tol);

@@ -5,7 +5,7 @@
 // regular files are refused without blocking, and no count is trusted
 // beyond the bytes that back it.
 
-#include "mesh_io.h"
+#include <CGAL/Disk_segmentation/IO/read_triangle_mesh.h>
 
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -49,7 +49,7 @@ struct Soup
 Soup read(const std::string& bytes, const std::string& ext)
 {
   Soup soup;
-  disk_uv::read_polygon_soup_from(bytes, ext, "m." + ext, soup.points, soup.faces);
+  CGAL::Disk_segmentation::IO::internal::read_polygon_soup_from(bytes, ext, "m." + ext, soup.points, soup.faces);
   return soup;
 }
 
@@ -60,7 +60,7 @@ std::string refusal(const std::string& bytes, const std::string& ext)
   {
     read(bytes, ext);
   }
-  catch(const disk_uv::Tool_error& e)
+  catch(const CGAL::Disk_segmentation::IO::File_error& e)
   {
     const std::string message = e.what();
     EXPECT_EQ(message.find('\n'), std::string::npos) << "not one line: " << message;
@@ -77,7 +77,7 @@ void expect_soup(const std::string& bytes, const std::string& ext, const Points&
   {
     soup = read(bytes, ext);
   }
-  catch(const disk_uv::Tool_error& e)
+  catch(const CGAL::Disk_segmentation::IO::File_error& e)
   {
     FAIL() << "refused: " << e.what();
   }
@@ -458,14 +458,14 @@ TEST(Readers, InputFileRefusesWhatIsNotARegularFile)
   // Regular files are read whole.
   const std::string path = temp_path("regular.off");
   std::ofstream(path, std::ios::binary) << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
-  EXPECT_EQ(disk_uv::read_input_file(path, false, 10).size(), 36u);
+  EXPECT_EQ(CGAL::Disk_segmentation::IO::internal::read_input_file(path, false, 10).size(), 36u);
 
   auto message = [](const std::string& p, bool allow, std::uint64_t limit) {
     try
     {
-      disk_uv::read_input_file(p, allow, limit);
+      CGAL::Disk_segmentation::IO::internal::read_input_file(p, allow, limit);
     }
-    catch(const disk_uv::Tool_error& e)
+    catch(const CGAL::Disk_segmentation::IO::File_error& e)
     {
       return std::string(e.what());
     }
@@ -485,10 +485,10 @@ TEST(Readers, InputFileRefusesWhatIsNotARegularFile)
   CGAL::Surface_mesh<Point> mesh;
   try
   {
-    disk_uv::read_triangle_mesh(zero, mesh);
+    CGAL::Disk_segmentation::IO::read_triangle_mesh(zero, mesh);
     ADD_FAILURE() << "/dev/zero read as a mesh";
   }
-  catch(const disk_uv::Tool_error& e)
+  catch(const CGAL::Disk_segmentation::IO::File_error& e)
   {
     EXPECT_NE(std::string(e.what()).find("is not a regular file (it is a character device)"), std::string::npos) << e.what();
   }
@@ -504,9 +504,9 @@ TEST(Readers, InputFileNeverBlocksOnAFifo)
   EXPECT_EQ(in_child([&] {
               try
               {
-                disk_uv::read_input_file(fifo, false, 1 << 20);
+                CGAL::Disk_segmentation::IO::internal::read_input_file(fifo, false, 1 << 20);
               }
-              catch(const disk_uv::Tool_error& e)
+              catch(const CGAL::Disk_segmentation::IO::File_error& e)
               {
                 return std::string(e.what()).find("is not a regular file (it is a FIFO)") != std::string::npos ? 0 : 1;
               }
@@ -521,7 +521,7 @@ TEST(Readers, InputFileNeverBlocksOnAFifo)
                 if(fd >= 0 && ::write(fd, mesh.data(), mesh.size()) == ssize_t(mesh.size()))
                   ::close(fd);
               });
-              const std::string bytes = disk_uv::read_input_file(fifo, true, 1 << 20);
+              const std::string bytes = CGAL::Disk_segmentation::IO::internal::read_input_file(fifo, true, 1 << 20);
               writer.join();
               return bytes == mesh ? 0 : 1;
             }),
@@ -610,7 +610,7 @@ TEST(Readers, CheckedSoupBuildsTheMeshCgalBuilds)
     SCOPED_TRACE(named.first);
     Soup& soup = named.second;
     std::size_t split = 0;
-    ASSERT_EQ(disk_uv::triangle_soup_problem(soup.points, soup.faces, &split), "");
+    ASSERT_EQ(CGAL::Disk_segmentation::IO::internal::triangle_soup_problem(soup.points, soup.faces, &split), "");
     if(named.first == "pinched")
       EXPECT_EQ(split, 1u);
     Surface ours, cgal;

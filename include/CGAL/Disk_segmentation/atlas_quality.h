@@ -256,7 +256,7 @@ Atlas_quality atlas_quality(const TriangleMesh& tm, UVMap uv_map, FacePatchMap f
   static_assert(internal::Check_patch_map<FacePatchMap>::value, "");
   static_assert(internal::Check_named_parameters<NamedParameters>::value, "");
   const std::size_t resolution = internal::count_parameter(
-    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::texture_resolution), 1024u),
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::texture_resolution), default_texture_resolution),
     "texture_resolution");
   if(resolution > (std::size_t(1) << 16))
     throw Input_error("atlas_quality: texture_resolution (" + std::to_string(resolution) +

@@ -63,7 +63,7 @@ double merge_threshold_parameter(const NamedParameters& np)
   using CGAL::parameters::get_parameter;
   return checked_merge_threshold(
     choose_parameter(get_parameter(np, Disk_segmentation::internal_np::merge_threshold),
-                     regular_polygon_threshold(5)));
+                     regular_polygon_threshold(default_merge_threshold_sides)));
 }
 
 // `labels` numbers disk regions canonically; merges them and renumbers.

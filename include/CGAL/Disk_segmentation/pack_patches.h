@@ -106,10 +106,6 @@ inline void report_packing_trial(const Packing_settings& s, std::size_t& trial)
     (*s.progress)("packing", (std::min)(++trial, reported_packing_trials - 1), reported_packing_trials);
 }
 
-// Pages are packed one after the other, each trying every chart left: the
-// cap keeps that linear in the charts whatever texels_per_unit is given.
-constexpr std::size_t default_max_pages = 64;
-
 template <typename NamedParameters>
 Packing_settings packing_settings(const NamedParameters& np)
 {
@@ -125,7 +121,7 @@ Packing_settings packing_settings(const NamedParameters& np)
   // Read through double so that a negative signed argument is caught rather
   // than wrapped around.
   s.resolution = static_cast<double>(count_parameter(
-    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::texture_resolution), 1024u),
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::texture_resolution), default_texture_resolution),
     "texture_resolution"));
   if(!(s.resolution >= 1.) || !std::isfinite(s.resolution))
     throw Input_error("pack_patches: texture_resolution must be at least 1");
@@ -133,7 +129,7 @@ Packing_settings packing_settings(const NamedParameters& np)
   if(!is_default_parameter<NamedParameters, Disk_segmentation::internal_np::texture_height_t>::value)
   {
     s.height = static_cast<double>(count_parameter(
-      choose_parameter(get_parameter(np, Disk_segmentation::internal_np::texture_height), 1024u), "texture_height"));
+      choose_parameter(get_parameter(np, Disk_segmentation::internal_np::texture_height), default_texture_resolution), "texture_height"));
     if(!(s.height >= 1.))
       throw Input_error("pack_patches: texture_height must be at least 1");
     if(s.height != s.resolution && s.method != Packing_method::TIGHT)
@@ -142,7 +138,7 @@ Packing_settings packing_settings(const NamedParameters& np)
   }
 
   s.padding = static_cast<double>(
-    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::padding_in_texels), 2.));
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::padding_in_texels), default_padding_in_texels));
   if(!(s.padding >= 0.) || !std::isfinite(s.padding))
     throw Input_error("pack_patches: padding_in_texels must be a finite number >= 0");
   if(!(2. * s.padding < (std::min)(s.resolution, s.height)))
@@ -156,7 +152,7 @@ Packing_settings packing_settings(const NamedParameters& np)
     throw Input_error("pack_patches: texels_per_unit needs packing_method TIGHT (the grid scales every chart to "
                       "its cell)");
   s.max_pages = count_parameter(
-    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::max_number_of_pages), default_max_pages),
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::max_number_of_pages), default_max_number_of_pages),
     "max_number_of_pages");
   if(s.max_pages == 0)
     throw Input_error("pack_patches: max_number_of_pages must be at least 1");

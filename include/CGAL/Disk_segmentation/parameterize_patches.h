@@ -114,26 +114,6 @@ struct Parameterization_report
   bool chart_budget_met = true;
 };
 
-/// \ingroup PkgDiskSegmentationRef
-/// The method `parameterize_patches()` uses when none is given: ARAP. It
-/// starts from the free-border LSCM map (from the injective mean value map
-/// when that fails) and keeps only iterates that stay valid, so it never
-/// needs a fallback when mean value coordinates succeed, and it has the
-/// lowest area distortion of all methods (see \ref DS_Parameterization in
-/// the user manual for the measurements behind this choice).
-constexpr Parameterization_method default_parameterization_method = Parameterization_method::ARAP;
-
-/// \ingroup PkgDiskSegmentationRef
-/// The `max_chart_faces` of `parameterize_patches()` when none is given:
-/// patches of more than \f$ 2^{17} = 131072 \f$ faces are split before
-/// they are parameterized. The time and memory of a chart's sparse
-/// factorization grow faster than its number of faces: on a 2.2M-face mesh
-/// this bound halves the parameterization time and keeps the peak memory of
-/// the whole pipeline at 0.89 GB on one thread (1.06 GB on two), for 3 more
-/// charts than \f$ 2^{18} \f$. With the default
-/// 10 seeds, meshes below about 1M faces rarely have such patches.
-constexpr std::size_t default_max_chart_faces = std::size_t(1) << 17;
-
 namespace internal {
 
 struct Parameterization_settings
@@ -436,7 +416,7 @@ void split_step(const Indexed_triangle_mesh& m, Splitter& splitter, Split_task& 
   for(Index f : task.faces)
     cells[splitter.fps.cell(f)].push_back(f);
   std::vector<std::vector<Index> > parts =
-    refine_region_list(splitter.topology, splitter.fps, std::move(cells), 5);
+    refine_region_list(splitter.topology, splitter.fps, std::move(cells), default_number_of_subsamples);
   if(needs_split.smoother != nullptr)
     smooth_parts(*needs_split.smoother, splitter, task.faces, parts);
   for(std::size_t i = parts.size(); i-- > 0;)

@@ -15,6 +15,7 @@
 
 #include <CGAL/disable_warnings.h>
 
+#include <CGAL/Disk_segmentation/default_values.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 

@@ -190,7 +190,7 @@ std::size_t refine_to_topological_disks(const TriangleMesh& tm,
   static_assert(internal::Check_patch_map<FacePatchMap>::value, "");
   static_assert(internal::Check_named_parameters<NamedParameters>::value, "");
   const std::size_t k = internal::checked_number_of_subsamples(internal::count_parameter(
-    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_subsamples), std::size_t(5)),
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_subsamples), default_number_of_subsamples),
     "number_of_subsamples"));
 
   internal::Indexed_triangle_mesh m;

@@ -43,10 +43,10 @@ auto canonical_parameters(const NamedParameters& np, bool default_smooth_borders
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   const std::size_t seeds = count_parameter(
-    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_seeds), std::size_t(10)),
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_seeds), default_number_of_seeds),
     "number_of_seeds");
   const std::size_t subsamples = count_parameter(
-    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_subsamples), std::size_t(5)),
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_subsamples), default_number_of_subsamples),
     "number_of_subsamples");
   const bool smooth = static_cast<bool>(
     choose_parameter(get_parameter(np, Disk_segmentation::internal_np::smooth_borders), default_smooth_borders));
@@ -70,7 +70,7 @@ Segmentation_steps segment_indexed(const Indexed_triangle_mesh& m, const FaceHan
   using CGAL::parameters::get_parameter;
 
   const std::size_t k = checked_number_of_subsamples(count_parameter(
-    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_subsamples), std::size_t(5)),
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_subsamples), default_number_of_subsamples),
     "number_of_subsamples"));
   const double threshold = merge_threshold_parameter(np);
 

@@ -64,10 +64,10 @@ void check_uv_atlas_parameters(const NamedParameters& np = parameters::default_v
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   internal::checked_number_of_seeds(internal::count_parameter(
-    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_seeds), std::size_t(10)),
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_seeds), default_number_of_seeds),
     "number_of_seeds"));
   internal::checked_number_of_subsamples(internal::count_parameter(
-    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_subsamples), std::size_t(5)),
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_subsamples), default_number_of_subsamples),
     "number_of_subsamples"));
   internal::merge_threshold_parameter(np);
   internal::parameterization_settings(np);

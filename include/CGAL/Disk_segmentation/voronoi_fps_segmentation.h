@@ -48,7 +48,7 @@ std::vector<Index> voronoi_fps_labels(const Indexed_triangle_mesh& m,
   using CGAL::parameters::is_default_parameter;
 
   const std::size_t n = checked_number_of_seeds(count_parameter(
-    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_seeds), std::size_t(10)),
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_seeds), default_number_of_seeds),
     "number_of_seeds"));
 
   Index first = no_index;

@@ -5,7 +5,7 @@
 //
 // The format is guessed from the first bytes (as a user's wrong extension
 // would not help); the parameters come from a hash of the bytes, so that one
-// input always runs the same way. Bad input must end in a Tool_error or an
+// input always runs the same way. Bad input must end in a File_error or an
 // Input_error; anything else escaping is a crash. An accepted mesh must give
 // an atlas that the independent checkers of the test suite accept (see
 // below for the one check that is replaced), or the process aborts.
@@ -15,7 +15,7 @@
 
 #include "../independent_atlas.h"
 #include "../independent_topology.h"
-#include "mesh_io.h"
+#include <CGAL/Disk_segmentation/IO/read_triangle_mesh.h>
 
 #include <CGAL/Disk_segmentation.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -69,7 +69,7 @@ inline Outcome run(const std::uint8_t* data, std::size_t size, Soup_options soup
   for(unsigned char c : bytes)
     hash = (hash ^ c) * 1099511628211ull;
 
-  disk_uv::Read_options options;
+  CGAL::Disk_segmentation::IO::Read_options options;
   options.repair = soup_options == Soup_options::FROM_HASH && ((hash >> 1) & 1);
   options.triangulate = soup_options == Soup_options::TRIANGULATE_ONLY || ((hash >> 2) & 1);
   Mesh mesh;
@@ -78,11 +78,11 @@ inline Outcome run(const std::uint8_t* data, std::size_t size, Soup_options soup
     std::vector<K::Point_3> points;
     std::vector<std::vector<std::size_t> > polygons;
     const std::string ext = guess_extension(bytes);
-    disk_uv::read_polygon_soup_from(bytes, ext, "fuzz input", points, polygons);
-    disk_uv::prepare_triangle_soup(points, polygons, options, "fuzz input");
+    CGAL::Disk_segmentation::IO::internal::read_polygon_soup_from(bytes, ext, "fuzz input", points, polygons);
+    CGAL::Disk_segmentation::IO::internal::prepare_triangle_soup(points, polygons, options, "fuzz input");
     CGAL::Disk_segmentation::IO::internal::checked_triangle_soup_to_mesh(points, polygons, mesh);
   }
-  catch(const disk_uv::Tool_error&)
+  catch(const CGAL::Disk_segmentation::IO::File_error&)
   {
     return Outcome::REJECTED_FILE;
   }

@@ -11,7 +11,7 @@ namespace CGAL {
 namespace Disk_segmentation {
 namespace internal {
 
-// The linear map of one triangle from 3D to UV, as in ../shared/METRICS.md:
+// The linear map of one triangle from 3D to UV (Atlas_quality's definition):
 // the 3D triangle is laid in an orthonormal frame of its plane
 // (x0 = (0,0), x1 = (|p1 - p0|, 0), x2 by projection) and J solves
 // J [x1 - x0, x2 - x0] = [u1 - u0, u2 - u0].

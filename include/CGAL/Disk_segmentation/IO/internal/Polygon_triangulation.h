@@ -10,8 +10,8 @@
 // those vertices need ever longer exact numbers, and a 120-corner polygon of
 // a 474-byte OBJ file ran for minutes (the fuzzer's hang).
 
-#ifndef DISK_SEGMENTATION_EXAMPLES_POLYGON_TRIANGULATION_H
-#define DISK_SEGMENTATION_EXAMPLES_POLYGON_TRIANGULATION_H
+#ifndef CGAL_DISK_SEGMENTATION_IO_INTERNAL_POLYGON_TRIANGULATION_H
+#define CGAL_DISK_SEGMENTATION_IO_INTERNAL_POLYGON_TRIANGULATION_H
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/number_utils.h>
@@ -22,13 +22,15 @@
 #include <cstddef>
 #include <vector>
 
-namespace disk_uv {
+namespace CGAL {
+namespace Disk_segmentation {
+namespace IO {
+namespace internal {
 
 // Polygons with more corners are fanned: ear clipping costs up to
 // O(corners^3) on a polygon with few ears (about 1e9 steps here).
 constexpr std::size_t max_ear_clipped_corners = 1000;
 
-namespace internal {
 
 // The polygon's corners in its best-fitting plane (Newell's normal, largest
 // axis dropped), oriented so that the polygon turns counterclockwise;
@@ -81,7 +83,6 @@ bool project_polygon(const std::vector<Point>& points, const std::vector<std::si
   return true;
 }
 
-} // namespace internal
 
 // The triangles of one polygon, as indices into `points`, in the polygon's
 // orientation. `used_fan` tells whether the polygon was fanned from one
@@ -114,7 +115,7 @@ std::vector<std::vector<std::size_t> > triangulate_polygon(const std::vector<Poi
     previous[i] = (i + n - 1) % n;
   }
   std::size_t remaining = n, cursor = 0;
-  if(n <= max_ear_clipped_corners && internal::project_polygon(points, polygon, q))
+  if(n <= max_ear_clipped_corners && project_polygon(points, polygon, q))
   {
     // A corner is an ear when it turns strictly left and no other remaining
     // corner lies in its triangle (corners at the same place as the ear's
@@ -162,6 +163,9 @@ std::vector<std::vector<std::size_t> > triangulate_polygon(const std::vector<Poi
   return triangles;
 }
 
-} // namespace disk_uv
+} // namespace internal
+} // namespace IO
+} // namespace Disk_segmentation
+} // namespace CGAL
 
-#endif // DISK_SEGMENTATION_EXAMPLES_POLYGON_TRIANGULATION_H
+#endif // CGAL_DISK_SEGMENTATION_IO_INTERNAL_POLYGON_TRIANGULATION_H

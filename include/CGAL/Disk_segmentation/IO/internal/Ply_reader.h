@@ -7,11 +7,11 @@
 // file has left before anything is allocated for it, and every problem is
 // named with its line (ASCII) or byte offset (binary).
 
-#ifndef DISK_SEGMENTATION_EXAMPLES_PLY_READER_H
-#define DISK_SEGMENTATION_EXAMPLES_PLY_READER_H
+#ifndef CGAL_DISK_SEGMENTATION_IO_INTERNAL_PLY_READER_H
+#define CGAL_DISK_SEGMENTATION_IO_INTERNAL_PLY_READER_H
 
-#include "text_scanner.h"
-#include "tool_error.h"
+#include <CGAL/Disk_segmentation/IO/internal/Text_scanner.h>
+#include <CGAL/Disk_segmentation/IO/File_error.h>
 
 #include <cmath>
 #include <cstdint>
@@ -20,14 +20,16 @@
 #include <string_view>
 #include <vector>
 
-namespace disk_uv {
+namespace CGAL {
+namespace Disk_segmentation {
+namespace IO {
+namespace internal {
 
 // A PLY header takes a few hundred bytes, a few kB with long comments; no
 // end_header line in the first MiB means the file is not PLY (or an input
 // that does not end).
 constexpr std::size_t max_ply_header_bytes = std::size_t(1) << 20;
 
-namespace internal {
 
 enum class Ply_type { INT8, UINT8, INT16, UINT16, INT32, UINT32, FLOAT32, FLOAT64 };
 
@@ -207,7 +209,6 @@ inline std::size_t ply_property_index(const Ply_element& element, const char* na
   return k;
 }
 
-} // namespace internal
 
 // Reads a PLY file: the `vertex` (or `vertices`) element's x, y and z, of
 // any scalar type, and the `face` (or `faces`) element's `vertex_indices`
@@ -217,7 +218,6 @@ template <typename Point>
 void read_PLY_soup(std::string_view bytes, const std::string& name, std::vector<Point>& points,
                    std::vector<std::vector<std::size_t> >& polygons)
 {
-  using namespace internal;
   const std::string_view header_text = bytes.substr(0, max_ply_header_bytes);
   Text_scanner header(header_text, name, "ply");
   std::vector<std::string_view> tokens;
@@ -398,6 +398,9 @@ void read_PLY_soup(std::string_view bytes, const std::string& name, std::vector<
     header.fail_file("it has no face element");
 }
 
-} // namespace disk_uv
+} // namespace internal
+} // namespace IO
+} // namespace Disk_segmentation
+} // namespace CGAL
 
-#endif // DISK_SEGMENTATION_EXAMPLES_PLY_READER_H
+#endif // CGAL_DISK_SEGMENTATION_IO_INTERNAL_PLY_READER_H

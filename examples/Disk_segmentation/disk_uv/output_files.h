@@ -13,8 +13,8 @@
 // terminal) are written through, after all temporary files were written and
 // before any rename; what was written to them cannot be taken back.
 
-#ifndef DISK_SEGMENTATION_EXAMPLES_OUTPUT_FILES_H
-#define DISK_SEGMENTATION_EXAMPLES_OUTPUT_FILES_H
+#ifndef DISK_UV_OUTPUT_FILES_H
+#define DISK_UV_OUTPUT_FILES_H
 
 #include "tool_error.h"
 
@@ -473,4 +473,4 @@ private:
 
 } // namespace disk_uv
 
-#endif // DISK_SEGMENTATION_EXAMPLES_OUTPUT_FILES_H
+#endif // DISK_UV_OUTPUT_FILES_H

@@ -1,14 +1,13 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-// The JSON report of an atlas, shared by disk_uv --report and the Python
-// module's Atlas.report.
+// The JSON report of an atlas (nlohmann-json), as disk_uv --report and the
+// Python module's Atlas.report write it.
 
-#ifndef DISK_SEGMENTATION_EXAMPLES_ATLAS_REPORT_JSON_H
-#define DISK_SEGMENTATION_EXAMPLES_ATLAS_REPORT_JSON_H
+#ifndef CGAL_DISK_SEGMENTATION_IO_ATLAS_REPORT_JSON_H
+#define CGAL_DISK_SEGMENTATION_IO_ATLAS_REPORT_JSON_H
 
-#include "mesh_io.h"
-
+#include <CGAL/Disk_segmentation/IO/read_triangle_mesh.h>
 #include <CGAL/Disk_segmentation/Parameterization_method.h>
 #include <CGAL/Disk_segmentation/uv_atlas.h>
 
@@ -17,7 +16,10 @@
 #include <string>
 #include <sys/resource.h>
 
-namespace disk_uv {
+namespace CGAL {
+namespace Disk_segmentation {
+namespace IO {
+namespace internal {
 
 // The process's peak resident memory so far, in MB (Linux reports KB).
 inline double peak_rss_mb()
@@ -28,7 +30,11 @@ inline double peak_rss_mb()
   return double(usage.ru_maxrss) / 1024.;
 }
 
-// The packing and its pages.
+} // namespace internal
+
+/// \ingroup PkgDiskSegmentationIO
+/// The packing and its pages as JSON: `efficiency`, `texels_per_unit`,
+/// `pages`, `page_efficiency`, `page_of_chart`.
 inline nlohmann::json packing_report_json(const CGAL::Disk_segmentation::Packing_report& p)
 {
   return { { "efficiency", p.efficiency },
@@ -38,17 +44,19 @@ inline nlohmann::json packing_report_json(const CGAL::Disk_segmentation::Packing
            { "page_of_chart", p.page_of_chart } };
 }
 
-// Everything disk_uv's --report holds: sizes, input changes, stage times,
-// peak memory and one entry per chart. `input` names the mesh's source.
+/// \ingroup PkgDiskSegmentationIO
+/// Everything an atlas report holds, as JSON: sizes, what reading changed,
+/// the stages' times, the process's peak memory and one entry per chart.
+/// `input` names the mesh's source, `method` and `packer` the names the
+/// user gave, `read_seconds` the time reading took.
 inline nlohmann::json atlas_report_json(const std::string& input, std::size_t vertices,
                                         const CGAL::Disk_segmentation::Atlas_report& r, const std::string& method,
                                         const std::string& packer, double read_seconds, const Read_changes& changes)
 {
-  namespace DS = CGAL::Disk_segmentation;
   nlohmann::json charts = nlohmann::json::array();
-  for(const DS::Chart_report& c : r.parameterization.charts)
-    charts.push_back({ { "patch", c.patch }, { "faces", c.faces }, { "requested", DS::to_string(c.requested) },
-                       { "used", DS::to_string(c.used) }, { "fallback", c.fallback }, { "split", c.split },
+  for(const Chart_report& c : r.parameterization.charts)
+    charts.push_back({ { "patch", c.patch }, { "faces", c.faces }, { "requested", to_string(c.requested) },
+                       { "used", to_string(c.used) }, { "fallback", c.fallback }, { "split", c.split },
                        { "valid", c.valid }, { "problem", c.problem },
                        { "angle_distortion", c.angle_distortion }, { "area_distortion", c.area_distortion },
                        { "max_stretch", c.max_stretch }, { "min_area_scale", c.min_area_scale },
@@ -80,10 +88,12 @@ inline nlohmann::json atlas_report_json(const std::string& input, std::size_t ve
     { "seconds", { { "read", read_seconds }, { "voronoi", r.voronoi_seconds }, { "refine", r.refine_seconds },
                    { "merge", r.merge_seconds }, { "parameterization", r.parameterization_seconds },
                    { "packing", r.packing_seconds }, { "total", r.total_seconds } } },
-    { "peak_rss_mb", peak_rss_mb() },
+    { "peak_rss_mb", internal::peak_rss_mb() },
     { "charts", charts } };
 }
 
-} // namespace disk_uv
+} // namespace IO
+} // namespace Disk_segmentation
+} // namespace CGAL
 
-#endif // DISK_SEGMENTATION_EXAMPLES_ATLAS_REPORT_JSON_H
+#endif // CGAL_DISK_SEGMENTATION_IO_ATLAS_REPORT_JSON_H

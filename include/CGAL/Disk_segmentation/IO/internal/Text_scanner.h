@@ -5,10 +5,10 @@
 // disk_uv tool's readers: every line is bounded, and every problem is
 // reported as one line naming the file, the line and the token.
 
-#ifndef DISK_SEGMENTATION_EXAMPLES_TEXT_SCANNER_H
-#define DISK_SEGMENTATION_EXAMPLES_TEXT_SCANNER_H
+#ifndef CGAL_DISK_SEGMENTATION_IO_INTERNAL_TEXT_SCANNER_H
+#define CGAL_DISK_SEGMENTATION_IO_INTERNAL_TEXT_SCANNER_H
 
-#include "tool_error.h"
+#include <CGAL/Disk_segmentation/IO/File_error.h>
 
 #include <algorithm>
 #include <charconv>
@@ -21,14 +21,16 @@
 #include <system_error>
 #include <vector>
 
-namespace disk_uv {
+namespace CGAL {
+namespace Disk_segmentation {
+namespace IO {
+namespace internal {
 
 // A mesh file's lines are short (an OBJ polygon of 10^5 vertices takes
 // about 1 MB); a longer one means a file without line breaks (a device, a
 // binary file under a text extension), named before it is scanned further.
 constexpr std::size_t max_line_bytes = std::size_t(1) << 20;
 
-namespace internal {
 
 inline bool is_blank(char c)
 {
@@ -133,10 +135,9 @@ inline bool parse_integer(std::string_view token, long long& value, bool& overfl
   return result.ec == std::errc() && result.ptr == digits.data() + digits.size() && !digits.empty();
 }
 
-} // namespace internal
 
 // Walks a text file held in memory line by line, or token by token across
-// lines, and throws the file's Tool_error naming the current line.
+// lines, and throws the file's File_error naming the current line.
 class Text_scanner
 {
 public:
@@ -159,7 +160,7 @@ public:
     const std::size_t length =
       found ? std::size_t(static_cast<const char*>(found) - (text_.data() + position_)) : searched;
     if(length > max_line_bytes)
-      fail("longer than " + internal::size_text(max_line_bytes) + " without a line break (not a text file?)");
+      fail("longer than " + size_text(max_line_bytes) + " without a line break (not a text file?)");
     line_ = rest_ = text_.substr(position_, length);
     position_ += length + (found ? 1 : 0);
     return true;
@@ -172,7 +173,7 @@ public:
     // Each pass takes a line (next_line moves past at least one byte).
     while(next_line())
     {
-      internal::split_tokens(line_, tokens, comment);
+      split_tokens(line_, tokens, comment);
       if(!tokens.empty())
         return true;
     }
@@ -186,12 +187,12 @@ public:
     for(;;)
     {
       std::size_t i = 0;
-      while(i < rest_.size() && internal::is_blank(rest_[i]))
+      while(i < rest_.size() && is_blank(rest_[i]))
         ++i;
       if(i < rest_.size())
       {
         std::size_t end = i;
-        while(end < rest_.size() && !internal::is_blank(rest_[end]))
+        while(end < rest_.size() && !is_blank(rest_[end]))
           ++end;
         token = rest_.substr(i, end - i);
         rest_.remove_prefix(end);
@@ -220,7 +221,7 @@ public:
   // A problem of the whole file, not of one line.
   [[noreturn]] void fail_file(const std::string& why) const
   {
-    throw Tool_error("'" + name_ + "' is not a valid ." + ext_ + " file (" + why + ")");
+    throw File_error("'" + name_ + "' is not a valid ." + ext_ + " file (" + why + ")");
   }
 
 private:
@@ -232,6 +233,9 @@ private:
   std::string_view line_, rest_;
 };
 
-} // namespace disk_uv
+} // namespace internal
+} // namespace IO
+} // namespace Disk_segmentation
+} // namespace CGAL
 
-#endif // DISK_SEGMENTATION_EXAMPLES_TEXT_SCANNER_H
+#endif // CGAL_DISK_SEGMENTATION_IO_INTERNAL_TEXT_SCANNER_H

@@ -6,11 +6,11 @@
 // the caller allows other inputs: opening a FIFO without a writer blocks
 // forever, and a device such as /dev/zero never ends.
 
-#ifndef DISK_SEGMENTATION_EXAMPLES_INPUT_FILE_H
-#define DISK_SEGMENTATION_EXAMPLES_INPUT_FILE_H
+#ifndef CGAL_DISK_SEGMENTATION_IO_INTERNAL_INPUT_FILE_H
+#define CGAL_DISK_SEGMENTATION_IO_INTERNAL_INPUT_FILE_H
 
-#include "text_scanner.h"
-#include "tool_error.h"
+#include <CGAL/Disk_segmentation/IO/internal/Text_scanner.h>
+#include <CGAL/Disk_segmentation/IO/File_error.h>
 
 #include <cerrno>
 #include <cstdint>
@@ -22,9 +22,11 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-namespace disk_uv {
-
+namespace CGAL {
+namespace Disk_segmentation {
+namespace IO {
 namespace internal {
+
 
 inline const char* file_kind(mode_t mode)
 {
@@ -67,7 +69,7 @@ inline std::size_t read_up_to(int fd, std::string& bytes, std::size_t wanted, co
     if(got < 0 && errno == EINTR)
       continue;
     if(got < 0)
-      throw Tool_error("error while reading '" + path + "' (" + std::strerror(errno) + ")");
+      throw File_error("error while reading '" + path + "' (" + std::strerror(errno) + ")");
     if(got == 0)
       break;
     done += std::size_t(got);
@@ -76,33 +78,32 @@ inline std::size_t read_up_to(int fd, std::string& bytes, std::size_t wanted, co
   return done;
 }
 
-} // namespace internal
 
 // The whole content of `path`. A regular file is read at its size; with
 // `allow_special_input`, another input (a FIFO, a device, a socket) is read
-// to its end, refused beyond `max_input_bytes`. Throws Tool_error.
+// to its end, refused beyond `max_input_bytes`. Throws File_error.
 inline std::string read_input_file(const std::string& path, bool allow_special_input,
                                    std::uint64_t max_input_bytes)
 {
   // stat() before open(): opening a FIFO without a writer would block.
   struct stat info;
   if(::stat(path.c_str(), &info) != 0)
-    throw Tool_error("cannot open '" + path + "' for reading (" + std::strerror(errno) + ")");
+    throw File_error("cannot open '" + path + "' for reading (" + std::strerror(errno) + ")");
   if(S_ISDIR(info.st_mode))
-    throw Tool_error("'" + path + "' is a directory, not a mesh file");
+    throw File_error("'" + path + "' is a directory, not a mesh file");
   const bool regular = S_ISREG(info.st_mode);
   if(!regular && !allow_special_input)
-    throw Tool_error("'" + path + "' is not a regular file (it is " + internal::file_kind(info.st_mode) +
-                     "); --allow-special-input reads it, up to " + internal::size_text(max_input_bytes));
+    throw File_error("'" + path + "' is not a regular file (it is " + file_kind(info.st_mode) +
+                     "); --allow-special-input reads it, up to " + size_text(max_input_bytes));
 
   // O_NONBLOCK: should the path have become a FIFO since stat(), open()
   // must not wait for a writer (it changes nothing for a regular file).
-  const internal::File_descriptor fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC | (regular ? O_NONBLOCK : 0)));
+  const File_descriptor fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC | (regular ? O_NONBLOCK : 0)));
   if(fd.get() < 0)
-    throw Tool_error("cannot open '" + path + "' for reading (" + std::strerror(errno) + ")");
+    throw File_error("cannot open '" + path + "' for reading (" + std::strerror(errno) + ")");
   struct stat opened;
   if(::fstat(fd.get(), &opened) != 0 || bool(S_ISREG(opened.st_mode)) != regular)
-    throw Tool_error("'" + path + "' changed while it was being opened");
+    throw File_error("'" + path + "' changed while it was being opened");
 
   std::string bytes;
   if(regular)
@@ -114,9 +115,9 @@ inline std::string read_input_file(const std::string& path, bool allow_special_i
     }
     catch(const std::bad_alloc&)
     {
-      throw Tool_error("'" + path + "' (" + std::to_string(opened.st_size) + " bytes) does not fit in memory");
+      throw File_error("'" + path + "' (" + std::to_string(opened.st_size) + " bytes) does not fit in memory");
     }
-    internal::read_up_to(fd.get(), bytes, std::size_t(opened.st_size), path);
+    read_up_to(fd.get(), bytes, std::size_t(opened.st_size), path);
     return bytes;
   }
   // Each pass that goes on reads a whole chunk, and the input is refused
@@ -127,15 +128,18 @@ inline std::string read_input_file(const std::string& path, bool allow_special_i
     const std::uint64_t room = max_input_bytes - bytes.size();
     // One byte beyond the limit tells a full input from a longer one.
     const std::size_t wanted = std::size_t(room < chunk ? room + 1 : chunk);
-    if(internal::read_up_to(fd.get(), bytes, wanted, path) < wanted)
+    if(read_up_to(fd.get(), bytes, wanted, path) < wanted)
       break;
     if(bytes.size() > max_input_bytes)
-      throw Tool_error("'" + path + "' is longer than the limit of " + internal::size_text(max_input_bytes) +
+      throw File_error("'" + path + "' is longer than the limit of " + size_text(max_input_bytes) +
                        " for an input that is not a regular file");
   }
   return bytes;
 }
 
-} // namespace disk_uv
+} // namespace internal
+} // namespace IO
+} // namespace Disk_segmentation
+} // namespace CGAL
 
-#endif // DISK_SEGMENTATION_EXAMPLES_INPUT_FILE_H
+#endif // CGAL_DISK_SEGMENTATION_IO_INTERNAL_INPUT_FILE_H

@@ -4,15 +4,15 @@
 // The disk_uv tool's strict readers of OFF, OBJ, STL and GOCAD TS polygon
 // soups (PLY: ply_reader.h), parsing a file held in memory. Each keeps the
 // file's vertex and face order, allocates no more than the file's bytes can
-// fill, and throws a Tool_error naming the line (or byte) and the token at
+// fill, and throws a File_error naming the line (or byte) and the token at
 // fault. Non-finite coordinates are refused here, where the line is known.
 
-#ifndef DISK_SEGMENTATION_EXAMPLES_MESH_READERS_H
-#define DISK_SEGMENTATION_EXAMPLES_MESH_READERS_H
+#ifndef CGAL_DISK_SEGMENTATION_IO_INTERNAL_MESH_READERS_H
+#define CGAL_DISK_SEGMENTATION_IO_INTERNAL_MESH_READERS_H
 
-#include "ply_reader.h"
-#include "text_scanner.h"
-#include "tool_error.h"
+#include <CGAL/Disk_segmentation/IO/internal/Ply_reader.h>
+#include <CGAL/Disk_segmentation/IO/internal/Text_scanner.h>
+#include <CGAL/Disk_segmentation/IO/File_error.h>
 
 #include <array>
 #include <cmath>
@@ -23,7 +23,10 @@
 #include <unordered_map>
 #include <vector>
 
-namespace disk_uv {
+namespace CGAL {
+namespace Disk_segmentation {
+namespace IO {
+namespace internal {
 
 typedef std::vector<std::vector<std::size_t> > Polygons;
 
@@ -55,8 +58,8 @@ void read_OFF_soup(std::string_view text, const std::string& name, std::vector<P
     first_count = 0;
   }
   std::size_t number_of_vertices = 0, number_of_faces = 0;
-  if(tokens.size() < first_count + 2 || !internal::parse_index(tokens[first_count], number_of_vertices) ||
-     !internal::parse_index(tokens[first_count + 1], number_of_faces))
+  if(tokens.size() < first_count + 2 || !parse_index(tokens[first_count], number_of_vertices) ||
+     !parse_index(tokens[first_count + 1], number_of_faces))
     in.fail("expected the numbers of vertices and faces");
 
   // A vertex line takes at least 6 bytes ("0 0 0\n"), a face line 2 ("0\n");
@@ -75,12 +78,12 @@ void read_OFF_soup(std::string_view text, const std::string& name, std::vector<P
     if(!in.next_tokens(tokens))
       in.fail("the file ends after " + std::to_string(v) + " of its " + std::to_string(number_of_vertices) +
               " vertices");
-    if(tokens.size() < 3 || !internal::parse_number(tokens[0], xyz[0]) ||
-       !internal::parse_number(tokens[1], xyz[1]) || !internal::parse_number(tokens[2], xyz[2]))
+    if(tokens.size() < 3 || !parse_number(tokens[0], xyz[0]) ||
+       !parse_number(tokens[1], xyz[1]) || !parse_number(tokens[2], xyz[2]))
       in.fail("vertex #" + std::to_string(v) + " does not start with three numbers");
     for(int i = 0; i < 3; ++i)
       if(!std::isfinite(xyz[i]))
-        in.fail("vertex #" + std::to_string(v) + " has a non-finite coordinate " + internal::quote_token(tokens[i]));
+        in.fail("vertex #" + std::to_string(v) + " has a non-finite coordinate " + quote_token(tokens[i]));
     points.emplace_back(xyz[0], xyz[1], xyz[2]);
   }
   for(std::size_t f = 0; f < number_of_faces; ++f)
@@ -88,17 +91,16 @@ void read_OFF_soup(std::string_view text, const std::string& name, std::vector<P
     if(!in.next_tokens(tokens))
       in.fail("the file ends after " + std::to_string(f) + " of its " + std::to_string(number_of_faces) + " faces");
     std::size_t size = 0;
-    if(!internal::parse_index(tokens[0], size) || size > tokens.size() - 1)
+    if(!parse_index(tokens[0], size) || size > tokens.size() - 1)
       in.fail("face #" + std::to_string(f) + " does not start with its number of vertices followed by as many indices");
     std::vector<std::size_t> polygon(size);
     for(std::size_t i = 0; i < size; ++i)
-      if(!internal::parse_index(tokens[i + 1], polygon[i]))
+      if(!parse_index(tokens[i + 1], polygon[i]))
         in.fail("face #" + std::to_string(f) + " has an index that is not a non-negative integer");
     polygons.push_back(std::move(polygon));
   }
 }
 
-namespace internal {
 
 // OBJ statements that do not change the polygon soup: texture coordinates,
 // normals, groups, materials, lines, points, free-form geometry.
@@ -126,7 +128,6 @@ inline bool continues_on_next_line(std::string_view line)
   return !line.empty() && line.back() == '\\';
 }
 
-} // namespace internal
 
 // Reads a Wavefront OBJ file: `v x y z [w] [colors]` and `f` lines whose
 // corners are `v`, `v/vt`, `v/vt/vn` or `v//vn`, indices from 1 or negative
@@ -147,24 +148,24 @@ void read_OBJ_soup(std::string_view text, const std::string& name, std::vector<P
   {
     const std::size_t line_number = in.line_number();
     std::string_view statement = in.line();
-    if(internal::continues_on_next_line(statement))
+    if(continues_on_next_line(statement))
     {
       joined.clear();
-      while(internal::continues_on_next_line(statement))
+      while(continues_on_next_line(statement))
       {
         joined.append(statement.data(), statement.find_last_of('\\')).push_back(' ');
         if(joined.size() > max_line_bytes)
           in.fail_at(line_number, "a statement continued over lines is longer than " +
-                                    internal::size_text(max_line_bytes));
+                                    size_text(max_line_bytes));
         if(!in.next_line())
           break;
         statement = in.line();
       }
-      if(!internal::continues_on_next_line(statement))
+      if(!continues_on_next_line(statement))
         joined.append(statement.data(), statement.size());
       statement = joined;
     }
-    internal::split_tokens(statement, tokens);
+    split_tokens(statement, tokens);
     if(tokens.empty())
       continue;
     const std::string_view keyword = tokens[0];
@@ -177,10 +178,10 @@ void read_OBJ_soup(std::string_view text, const std::string& name, std::vector<P
       for(std::size_t i = 1; i < tokens.size(); ++i)
       {
         double value = 0;
-        if(!internal::parse_number(tokens[i], value))
-          in.fail_at(line_number, internal::quote_token(tokens[i]) + " is not a number");
+        if(!parse_number(tokens[i], value))
+          in.fail_at(line_number, quote_token(tokens[i]) + " is not a number");
         if(i <= 3 && !std::isfinite(value))
-          in.fail_at(line_number, vertex_name() + " has a non-finite coordinate " + internal::quote_token(tokens[i]));
+          in.fail_at(line_number, vertex_name() + " has a non-finite coordinate " + quote_token(tokens[i]));
         if(i <= 3)
           xyz[i - 1] = value;
       }
@@ -205,18 +206,18 @@ void read_OBJ_soup(std::string_view text, const std::string& name, std::vector<P
           long long unused = 0;
           bool overflow = false;
           const bool texture_ok = texture.empty() ? second != std::string_view::npos && !normal.empty()
-                                                  : internal::parse_integer(texture, unused, overflow);
-          const bool normal_ok = second == std::string_view::npos || internal::parse_integer(normal, unused, overflow);
+                                                  : parse_integer(texture, unused, overflow);
+          const bool normal_ok = second == std::string_view::npos || parse_integer(normal, unused, overflow);
           if(!texture_ok || !normal_ok)
-            in.fail_at(line_number, internal::quote_token(corner) + " is not a face corner (v, v/vt, v/vt/vn or v//vn)");
+            in.fail_at(line_number, quote_token(corner) + " is not a face corner (v, v/vt, v/vt/vn or v//vn)");
         }
         long long index = 0;
         bool overflow = false;
-        if(!internal::parse_integer(vertex, index, overflow))
+        if(!parse_integer(vertex, index, overflow))
         {
           if(overflow)
             in.fail_at(line_number, "index " + std::string(vertex) + " refers to no vertex");
-          in.fail_at(line_number, internal::quote_token(vertex) + " is not a vertex index");
+          in.fail_at(line_number, quote_token(vertex) + " is not a vertex index");
         }
         const long long so_far = static_cast<long long>(points.size() - vertices_before);
         if(index == 0)
@@ -235,8 +236,8 @@ void read_OBJ_soup(std::string_view text, const std::string& name, std::vector<P
         in.fail_at(line_number, "face #" + std::to_string(polygons.size()) + " has no vertex");
       polygons.push_back(std::move(polygon));
     }
-    else if(!internal::is_ignored_OBJ_statement(keyword))
-      in.fail_at(line_number, "unknown statement " + internal::quote_token(keyword));
+    else if(!is_ignored_OBJ_statement(keyword))
+      in.fail_at(line_number, "unknown statement " + quote_token(keyword));
   }
   const std::size_t vertices = points.size() - vertices_before;
   if(largest_index > static_cast<long long>(vertices))
@@ -246,7 +247,6 @@ void read_OBJ_soup(std::string_view text, const std::string& name, std::vector<P
     in.fail_file(vertices == 0 ? "it has no vertex and no face" : "it has no face");
 }
 
-namespace internal {
 
 // Gives each distinct point the index of its first appearance, as CGAL's
 // STL reader does with a std::map of points: -0.0 and 0.0 are one point
@@ -300,7 +300,7 @@ template <typename Point>
 void read_binary_STL(std::string_view bytes, const std::string& name, std::vector<Point>& points, Polygons& polygons)
 {
   auto fail = [&](const std::string& why) {
-    throw Tool_error("'" + name + "' is not a valid .stl file (" + why + ")");
+    throw File_error("'" + name + "' is not a valid .stl file (" + why + ")");
   };
   if(bytes.size() < 84)
     fail("it does not start with 'solid' and its " + std::to_string(bytes.size()) +
@@ -407,7 +407,6 @@ void read_ASCII_STL(std::string_view text, const std::string& name, std::vector<
     in.fail_file("it has no facet");
 }
 
-} // namespace internal
 
 // Reads an STL file, binary or ASCII. Identical points are merged into one
 // vertex, numbered in order of first appearance (as CGAL's reader does:
@@ -418,19 +417,19 @@ template <typename Point>
 void read_STL_soup(std::string_view bytes, const std::string& name, std::vector<Point>& points, Polygons& polygons)
 {
   std::size_t start = 0;
-  while(start < bytes.size() && (internal::is_blank(bytes[start]) || bytes[start] == '\n'))
+  while(start < bytes.size() && (is_blank(bytes[start]) || bytes[start] == '\n'))
     ++start;
   if(start == bytes.size())
-    throw Tool_error("'" + name + "' is not a valid .stl file (it is empty)");
+    throw File_error("'" + name + "' is not a valid .stl file (it is empty)");
   const std::string_view head = bytes.substr(start, 6);
   const bool starts_with_solid =
-    head.substr(0, 5) == "solid" && (head.size() == 5 || internal::is_blank(head[5]) || head[5] == '\n');
+    head.substr(0, 5) == "solid" && (head.size() == 5 || is_blank(head[5]) || head[5] == '\n');
   const bool binary_size =
-    bytes.size() >= 84 && bytes.size() == 84 + 50 * std::uint64_t(internal::little_endian_uint32(bytes.data() + 80));
+    bytes.size() >= 84 && bytes.size() == 84 + 50 * std::uint64_t(little_endian_uint32(bytes.data() + 80));
   if(starts_with_solid && !binary_size)
-    internal::read_ASCII_STL(bytes, name, points, polygons);
+    read_ASCII_STL(bytes, name, points, polygons);
   else
-    internal::read_binary_STL(bytes, name, points, polygons);
+    read_binary_STL(bytes, name, points, polygons);
 }
 
 // Reads a GOCAD TSurf (.ts) file: the VRTX/PVRTX (id x y z), ATOM/PATOM
@@ -454,8 +453,8 @@ void read_TS_soup(std::string_view text, const std::string& name, std::vector<Po
   auto id_at = [&](std::size_t i, const char* what) {
     long long id = 0;
     bool overflow = false;
-    if(i >= tokens.size() || !internal::parse_integer(tokens[i], id, overflow))
-      in.fail(std::string(what) + (i < tokens.size() ? ": " + internal::quote_token(tokens[i]) + " is not an id" : " is missing"));
+    if(i >= tokens.size() || !parse_integer(tokens[i], id, overflow))
+      in.fail(std::string(what) + (i < tokens.size() ? ": " + quote_token(tokens[i]) + " is not an id" : " is missing"));
     return id;
   };
   auto define = [&](long long id, std::size_t vertex) {
@@ -481,11 +480,11 @@ void read_TS_soup(std::string_view text, const std::string& name, std::vector<Po
       double xyz[3];
       for(int i = 0; i < 3; ++i)
       {
-        if(std::size_t(i + 2) >= tokens.size() || !internal::parse_number(tokens[i + 2], xyz[i]))
+        if(std::size_t(i + 2) >= tokens.size() || !parse_number(tokens[i + 2], xyz[i]))
           in.fail("vertex #" + std::to_string(points.size()) + " does not have three coordinates after its id");
         if(!std::isfinite(xyz[i]))
           in.fail("vertex #" + std::to_string(points.size()) + " has a non-finite coordinate " +
-                  internal::quote_token(tokens[i + 2]));
+                  quote_token(tokens[i + 2]));
       }
       define(id, points.size());
       points.emplace_back(xyz[0], xyz[1], xyz[2]);
@@ -532,6 +531,9 @@ void read_TS_soup(std::string_view text, const std::string& name, std::vector<Po
     in.fail_file("it has no triangle");
 }
 
-} // namespace disk_uv
+} // namespace internal
+} // namespace IO
+} // namespace Disk_segmentation
+} // namespace CGAL
 
-#endif // DISK_SEGMENTATION_EXAMPLES_MESH_READERS_H
+#endif // CGAL_DISK_SEGMENTATION_IO_INTERNAL_MESH_READERS_H

@@ -1,22 +1,24 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// File input of the disk_uv tool: reading a mesh file with a one-line
-// diagnosis of what is wrong with a bad one, optional repair and
-// triangulation, and the checks a triangle mesh must pass. Outputs are
-// written by output_files.h.
+// Strict mesh file input: reading a mesh file with a one-line diagnosis of
+// what is wrong with a bad one, optional repair and triangulation, and the
+// checks a triangle mesh must pass.
 
-#ifndef DISK_SEGMENTATION_EXAMPLES_MESH_IO_H
-#define DISK_SEGMENTATION_EXAMPLES_MESH_IO_H
+#ifndef CGAL_DISK_SEGMENTATION_IO_READ_TRIANGLE_MESH_H
+#define CGAL_DISK_SEGMENTATION_IO_READ_TRIANGLE_MESH_H
 
-#include "input_file.h"
-#include "mesh_readers.h"
-#include "polygon_triangulation.h"
-#include "tool_error.h"
+#include <CGAL/Disk_segmentation/IO/File_error.h>
+#include <CGAL/Disk_segmentation/IO/internal/Input_file.h>
+#include <CGAL/Disk_segmentation/IO/internal/Mesh_readers.h>
+#include <CGAL/Disk_segmentation/IO/internal/Polygon_triangulation.h>
 
 #include <CGAL/Disk_segmentation/IO/internal/Triangle_soup_to_mesh.h>
+// Doxygen's preprocessor trips over a Boost header these include.
+#ifndef DOXYGEN_RUNNING
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+#endif
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
@@ -38,7 +40,48 @@
 
 #include <unistd.h>
 
-namespace disk_uv {
+namespace CGAL {
+namespace Disk_segmentation {
+namespace IO {
+/// \ingroup PkgDiskSegmentationIO
+/// What `read_triangle_mesh()` may change in a mesh before checking it:
+/// repair and triangulation are off by default, so that a bad mesh is named
+/// rather than silently altered.
+struct Read_options
+{
+  // CGAL's soup repair: merges duplicated points, removes degenerate and
+  // duplicated faces and isolated points, then orients the faces
+  // consistently and duplicates the points of non-manifold edges and
+  // vertices (the mesh is cut there).
+  bool repair = false;
+  // Polygons of 4 or more vertices are triangulated (ear clipping in the
+  // polygon's plane; a fan if that fails, see polygon_triangulation.h).
+  bool triangulate = false;
+  // Inputs that are not regular files (pipes, devices) are refused unless
+  // this is set: they may never end.
+  bool allow_special_input = false;
+  // Such an input, when allowed, is refused beyond this size.
+  std::uint64_t max_input_bytes = std::uint64_t(4) << 30;
+};
+
+/// \ingroup PkgDiskSegmentationIO
+/// What `read_triangle_mesh()` changed; all zero when the file was used as it is.
+struct Read_changes
+{
+  std::size_t polygons_triangulated = 0;
+  std::size_t fan_triangulations = 0;  // polygons the planar triangulation failed on
+  std::size_t faces_removed = 0;       // by the repair (net of added faces)
+  std::size_t faces_added = 0;         // by the triangulation
+  std::size_t vertices_removed = 0;    // merged or isolated, net of the ones the repair duplicated
+  std::size_t vertices_added = 0;      // duplicated by the repair to make the mesh manifold
+  std::size_t pinched_vertices_split = 0;  // vertex copies given to the extra fans of pinched vertices
+  // With `triangulate`: the polygon (its position among the faces read,
+  // after the repair) of each face of the mesh. Empty otherwise.
+  std::vector<std::size_t> polygon_of_face;
+};
+
+namespace internal {
+
 
 inline std::string lower_extension(const std::string& path)
 {
@@ -204,42 +247,8 @@ std::string triangle_soup_problem(std::vector<Point>& points,
   return std::string();
 }
 
-// What the reader may change in a mesh before checking it: both are off
-// by default, so that a bad mesh is named rather than silently altered.
-struct Read_options
-{
-  // CGAL's soup repair: merges duplicated points, removes degenerate and
-  // duplicated faces and isolated points, then orients the faces
-  // consistently and duplicates the points of non-manifold edges and
-  // vertices (the mesh is cut there).
-  bool repair = false;
-  // Polygons of 4 or more vertices are triangulated (ear clipping in the
-  // polygon's plane; a fan if that fails, see polygon_triangulation.h).
-  bool triangulate = false;
-  // Inputs that are not regular files (pipes, devices) are refused unless
-  // this is set: they may never end.
-  bool allow_special_input = false;
-  // Such an input, when allowed, is refused beyond this size.
-  std::uint64_t max_input_bytes = std::uint64_t(4) << 30;
-};
-
-// What reading changed; all zero when the file was used as it is.
-struct Read_changes
-{
-  std::size_t polygons_triangulated = 0;
-  std::size_t fan_triangulations = 0;  // polygons the planar triangulation failed on
-  std::size_t faces_removed = 0;       // by the repair (net of added faces)
-  std::size_t faces_added = 0;         // by the triangulation
-  std::size_t vertices_removed = 0;    // merged or isolated, net of the ones the repair duplicated
-  std::size_t vertices_added = 0;      // duplicated by the repair to make the mesh manifold
-  std::size_t pinched_vertices_split = 0;  // vertex copies given to the extra fans of pinched vertices
-  // With `triangulate`: the polygon (its position among the faces read,
-  // after the repair) of each face of the mesh. Empty otherwise.
-  std::vector<std::size_t> polygon_of_face;
-};
-
 // Reads a polygon soup in the format named by `ext` (off, obj, ply, stl, ts)
-// from the file's `bytes` (see mesh_readers.h). Throws Tool_error naming `name`.
+// from the file's `bytes` (see mesh_readers.h). Throws File_error naming `name`.
 template <typename Point>
 void read_polygon_soup_from(std::string_view bytes, const std::string& ext, const std::string& name,
                             std::vector<Point>& points, std::vector<std::vector<std::size_t> >& polygons)
@@ -257,11 +266,11 @@ void read_polygon_soup_from(std::string_view bytes, const std::string& ext, cons
   else if(ext == "ts")
     read_TS_soup(bytes, name, points, polygons);
   else
-    throw Tool_error("'" + name + "': unknown mesh format '" + ext + "' (supported: .off .obj .ply .stl .ts)");
+    throw File_error("'" + name + "': unknown mesh format '" + ext + "' (supported: .off .obj .ply .stl .ts)");
 }
 
 // Applies `options` to a soup just read, then checks that it is a manifold,
-// consistently oriented triangle mesh. Throws Tool_error naming `name`.
+// consistently oriented triangle mesh. Throws File_error naming `name`.
 template <typename Point>
 Read_changes prepare_triangle_soup(std::vector<Point>& points, std::vector<std::vector<std::size_t> >& polygons,
                                    const Read_options& options, const std::string& name)
@@ -271,7 +280,7 @@ Read_changes prepare_triangle_soup(std::vector<Point>& points, std::vector<std::
   // Repair and triangulation compute with the coordinates: they must be finite.
   const std::string reference_problem = soup_reference_problem(points, polygons);
   if(!reference_problem.empty())
-    throw Tool_error("'" + name + "': " + reference_problem);
+    throw File_error("'" + name + "': " + reference_problem);
 
   if(options.repair)
   {
@@ -322,36 +331,49 @@ Read_changes prepare_triangle_soup(std::vector<Point>& points, std::vector<std::
                                 problem.find("oriented") != std::string::npos ||
                                 problem.find("twice") != std::string::npos))
       hint = " (--repair fixes this)";
-    throw Tool_error("'" + name + "': " + problem + hint);
+    throw File_error("'" + name + "': " + problem + hint);
   }
   return changes;
 }
 
-// Reads a triangle mesh (OFF, OBJ, PLY, STL, TS),
-// keeping the file's face and vertex order unless `options` change the
-// mesh. Throws Tool_error with a one-line message naming the problem.
+} // namespace internal
+
+/// \ingroup PkgDiskSegmentationIO
+/// Reads the triangle mesh of the file `path` (OFF, OBJ, PLY, STL or TS,
+/// told by the extension) into `mesh`, keeping the file's face and vertex
+/// order unless `options` change the mesh. A vertex where faces meet in
+/// several fans is split into one vertex per fan; a non-manifold edge,
+/// inconsistently oriented or duplicated faces and polygons are refused
+/// unless `options` repair or triangulate them.
+///
+/// \tparam Mesh a model of `MutableFaceGraph` whose points are 3D points
+/// \returns what reading changed
+/// \throws File_error with a one-line message naming the file and the
+/// problem (the first bad line, token or element)
 template <typename Mesh>
 Read_changes read_triangle_mesh(const std::string& path, Mesh& mesh, const Read_options& options = Read_options())
 {
   typedef typename boost::property_traits<
     typename boost::property_map<Mesh, CGAL::vertex_point_t>::type>::value_type Point;
 
-  const std::string ext = lower_extension(path);
+  const std::string ext = internal::lower_extension(path);
   if(ext != "off" && ext != "obj" && ext != "ply" && ext != "stl" && ext != "ts")
-    throw Tool_error("'" + path + "': unknown mesh format '" + ext + "' (supported: .off .obj .ply .stl .ts)");
+    throw File_error("'" + path + "': unknown mesh format '" + ext + "' (supported: .off .obj .ply .stl .ts)");
 
   std::vector<Point> points;
   std::vector<std::vector<std::size_t> > polygons;
   {
     // The file's bytes are freed before the mesh is built.
-    const std::string bytes = read_input_file(path, options.allow_special_input, options.max_input_bytes);
-    read_polygon_soup_from(bytes, ext, path, points, polygons);
+    const std::string bytes = internal::read_input_file(path, options.allow_special_input, options.max_input_bytes);
+    internal::read_polygon_soup_from(bytes, ext, path, points, polygons);
   }
-  const Read_changes changes = prepare_triangle_soup(points, polygons, options, path);
-  CGAL::Disk_segmentation::IO::internal::checked_triangle_soup_to_mesh(points, polygons, mesh);
+  const Read_changes changes = internal::prepare_triangle_soup(points, polygons, options, path);
+  internal::checked_triangle_soup_to_mesh(points, polygons, mesh);
   return changes;
 }
 
-} // namespace disk_uv
+} // namespace IO
+} // namespace Disk_segmentation
+} // namespace CGAL
 
-#endif // DISK_SEGMENTATION_EXAMPLES_MESH_IO_H
+#endif // CGAL_DISK_SEGMENTATION_IO_READ_TRIANGLE_MESH_H

@@ -24,14 +24,14 @@
 // checked before any work, and the outputs replace their files only once
 // all were written (output_files.h): a failed run changes no file.
 
+#include <CGAL/Disk_segmentation/IO/Atlas_options.h>
+#include <CGAL/Disk_segmentation/IO/atlas_report_JSON.h>
+#include <CGAL/Disk_segmentation/IO/read_triangle_mesh.h>
+#include <CGAL/Disk_segmentation/IO/udim_tiles.h>
 #include <CGAL/Disk_segmentation/IO/write_atlas_GLB.h>
 #include <CGAL/Disk_segmentation/IO/write_atlas_OBJ.h>
 #include <CGAL/Disk_segmentation/IO/write_atlas_PNG.h>
-#include <CGAL/Disk_segmentation/IO/udim_tiles.h>
-#include "atlas_report_json.h"
-#include "mesh_io.h"
 #include "output_files.h"
-#include "parameter_names.h"
 
 #include <CGAL/Disk_segmentation.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
@@ -57,6 +57,7 @@
 #include <unistd.h>
 
 namespace DS = CGAL::Disk_segmentation;
+namespace DS_IO = CGAL::Disk_segmentation::IO;
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
@@ -97,11 +98,11 @@ std::vector<std::int64_t> read_material_ids(const std::string& path, std::size_t
   std::string bytes;
   try
   {
-    bytes = disk_uv::read_input_file(path, allow_special_input, std::uint64_t(1) << 32);
+    bytes = DS_IO::internal::read_input_file(path, allow_special_input, std::uint64_t(1) << 32);
   }
-  catch(const disk_uv::Tool_error& e)
+  catch(const DS_IO::File_error& e)
   {
-    throw disk_uv::Tool_error(std::string("--material-ids: ") + e.what());
+    throw DS_IO::File_error(std::string("--material-ids: ") + e.what());
   }
   std::vector<std::int64_t> ids;
   ids.reserve(faces);
@@ -192,7 +193,7 @@ struct Several_atlas
 {
   std::vector<std::string> inputs;
   std::vector<Mesh> meshes;
-  std::vector<disk_uv::Read_changes> changes;
+  std::vector<DS_IO::Read_changes> changes;
   std::vector<Patch_map> patches;
   std::vector<UV_map> uvs;
   DS::Multi_mesh_atlas_report report;
@@ -200,7 +201,7 @@ struct Several_atlas
 };
 
 template <typename NamedParameters>
-Several_atlas atlas_of_several(const std::vector<std::string>& inputs, const disk_uv::Read_options& read_options,
+Several_atlas atlas_of_several(const std::vector<std::string>& inputs, const DS_IO::Read_options& read_options,
                                const NamedParameters& np)
 {
   Several_atlas s;
@@ -210,7 +211,7 @@ Several_atlas atlas_of_several(const std::vector<std::string>& inputs, const dis
   timer.start();
   for(std::size_t i = 0; i < inputs.size(); ++i)
   {
-    s.changes.push_back(disk_uv::read_triangle_mesh(inputs[i], s.meshes[i], read_options));
+    s.changes.push_back(DS_IO::read_triangle_mesh(inputs[i], s.meshes[i], read_options));
     s.patches.push_back(s.meshes[i].add_property_map<Mesh::Face_index, std::size_t>("f:patch", 0).first);
     s.uvs.push_back(s.meshes[i].add_property_map<Mesh::Halfedge_index, Kernel::Point_2>("h:uv").first);
   }
@@ -265,17 +266,17 @@ nlohmann::json several_report_json(const Several_atlas& s, const std::string& me
   {
     DS::Atlas_report r = s.report.meshes[i];
     r.packing = s.report.packing;  // the common packing
-    nlohmann::json mesh = disk_uv::atlas_report_json(s.inputs[i], s.meshes[i].number_of_vertices(), r, method,
+    nlohmann::json mesh = DS_IO::atlas_report_json(s.inputs[i], s.meshes[i].number_of_vertices(), r, method,
                                                      packer, 0., s.changes[i]);
     mesh["first_chart"] = s.report.first_chart[i];
     meshes.push_back(std::move(mesh));
   }
   return { { "inputs", meshes },
            { "charts", s.report.first_chart.back() },
-           { "packing", disk_uv::packing_report_json(s.report.packing) },
+           { "packing", DS_IO::packing_report_json(s.report.packing) },
            { "seconds", { { "read", s.read_seconds }, { "packing", s.report.packing_seconds },
                           { "total", s.report.total_seconds } } },
-           { "peak_rss_mb", disk_uv::peak_rss_mb() } };
+           { "peak_rss_mb", DS_IO::internal::peak_rss_mb() } };
 }
 
 void print_several_summary(const Several_atlas& s)
@@ -317,29 +318,10 @@ const CLI::Validator non_negative_count(
   },
   "COUNT");
 
-// "1024" or "2048x1024": the texture's width and height in texels; false
-// if `text` is neither.
-bool read_texture_size(const std::string& text, unsigned int& width, unsigned int& height)
-{
-  const std::size_t x = text.find('x');
-  const std::string sides[2] = { text.substr(0, x), x == std::string::npos ? text : text.substr(x + 1) };
-  unsigned int values[2] = { 0, 0 };
-  for(int k = 0; k < 2; ++k)
-  {
-    const std::string& side = sides[k];
-    const auto result = std::from_chars(side.data(), side.data() + side.size(), values[k]);
-    if(side.empty() || side.find_first_not_of("0123456789") != std::string::npos || result.ec != std::errc())
-      return false;
-  }
-  width = values[0];
-  height = values[1];
-  return true;
-}
-
 const CLI::Validator texture_size(
   [](std::string& text) -> std::string {
     unsigned int width, height;
-    return read_texture_size(text, width, height)
+    return DS_IO::parse_texture_size(text, width, height)
              ? std::string()
              : "'" + text + "' is not a non-negative integer or WIDTHxHEIGHT of them (or is too large)";
   },
@@ -414,17 +396,16 @@ int main(int argc, char** argv)
   CLI::App app{"disk_uv: UV atlas of a triangle mesh through a segmentation into topological disks"};
   std::vector<std::string> inputs;
   std::string obj_path, glb_path, png_path, report_path, patch_ids_path, colored_path, material_ids_path;
-  std::string method_name = DS::to_string(DS::default_parameterization_method), packer_name = "tight";
-  std::size_t n = 10, k = 5;
-  double threshold = DS::regular_polygon_threshold(5), padding = 2, texels_per_unit = 0;
-  std::size_t max_pages = 64;
-  DS::Distortion_bound bound;
-  bool unbounded = false, rough_borders = false;
-  std::size_t max_chart_faces = DS::default_max_chart_faces, max_charts = 0;
-  unsigned int threads = 0;
-  std::string resolution = "1024";
+  DS_IO::Atlas_options options;
+  std::string& method_name = options.method;
+  std::string& packer_name = options.packer;
+  double& padding = options.padding_in_texels;
+  double& texels_per_unit = options.texels_per_unit;
+  std::size_t& max_charts = options.max_number_of_charts;
+  DS::Distortion_bound& bound = options.bound;
+  std::string resolution = std::to_string(DS::default_texture_resolution);
   bool no_fallback = false, quiet = false;
-  disk_uv::Read_options read_options;
+  DS_IO::Read_options read_options;
   app.add_option("INPUT", inputs,
                  "input triangle mesh (.off .obj .ply .stl .ts); several: one atlas for all, each mesh "
                  "segmented alone")->required();
@@ -446,11 +427,11 @@ int main(int argc, char** argv)
                  "fixed texel density (texels per unit of length, tight packer): the charts fill as many pages of "
                  "--resolution texels as they need, laid out as UDIM tiles (0: the largest density that fits one "
                  "page)")->capture_default_str();
-  app.add_option("--max-pages", max_pages, "most pages --texels-per-unit may fill")
+  app.add_option("--max-pages", options.max_number_of_pages, "most pages --texels-per-unit may fill")
     ->capture_default_str()->check(non_negative_count);
-  app.add_option("-n,--seeds", n, "number of farthest-point seeds")->capture_default_str()->check(non_negative_count);
-  app.add_option("-k,--subsamples", k, "seeds used to re-sample a region that is not a disk")->capture_default_str()->check(non_negative_count);
-  app.add_option("--threshold", threshold, "merge score threshold (eps_5 = 0.7624 by default)")->capture_default_str();
+  app.add_option("-n,--seeds", options.number_of_seeds, "number of farthest-point seeds")->capture_default_str()->check(non_negative_count);
+  app.add_option("-k,--subsamples", options.number_of_subsamples, "seeds used to re-sample a region that is not a disk")->capture_default_str()->check(non_negative_count);
+  app.add_option("--threshold", options.merge_threshold, "merge score threshold (eps_5 = 0.7624 by default)")->capture_default_str();
   app.add_option("--max-angle-distortion", bound.max_angle_distortion,
                  "largest mean |log(s1/s2)| of a chart (inf: no bound)")->capture_default_str();
   app.add_option("--max-area-distortion", bound.max_area_distortion,
@@ -464,16 +445,16 @@ int main(int argc, char** argv)
   app.add_option("--min-convexity", bound.min_convexity,
                  "smallest UV area / UV convex hull area of a chart holding 3% of the mesh's area or more, "
                  "0.8 times it for smaller charts (0: no bound; packs tighter)")->capture_default_str();
-  app.add_flag("--unbounded", unbounded,
+  app.add_flag("--unbounded", options.unbounded,
                "no distortion or convexity bound: the paper's charts (only invalid ones are redone or split)");
-  app.add_flag("--rough-borders", rough_borders,
+  app.add_flag("--rough-borders", options.rough_borders,
                "keep the saw teeth of chart borders (the paper's segmentation; smoothed and straightened by default)");
-  app.add_option("--max-chart-faces", max_chart_faces,
+  app.add_option("--max-chart-faces", options.max_chart_faces,
                  "split larger patches before parameterizing them (bounds memory)")->capture_default_str()->check(non_negative_count);
   app.add_option("--max-charts", max_charts,
                  "chart budget: merge charts past the distortion bound until there are at most this many "
                  "(0: no budget)")->capture_default_str()->check(non_negative_count);
-  app.add_option("--threads", threads, "maximum number of threads (0: all)")->capture_default_str()->check(non_negative_count);
+  app.add_option("--threads", options.number_of_threads, "maximum number of threads (0: all)")->capture_default_str()->check(non_negative_count);
   app.add_flag("--repair", read_options.repair,
                "merge duplicated vertices, drop duplicated and degenerate faces, orient the faces and "
                "cut the mesh at non-manifold edges and vertices");
@@ -501,8 +482,8 @@ int main(int argc, char** argv)
   const std::string& input = inputs.front();
   try
   {
-    unsigned int width = 0, height = 0;
-    read_texture_size(resolution, width, height);
+    DS_IO::parse_texture_size(resolution, options.texture_width, options.texture_height);
+    const unsigned int width = options.texture_width, height = options.texture_height;
     for(unsigned int side : { width, height })
       if(!png_path.empty() && (side == 0 || side > CGAL::Disk_segmentation::IO::max_atlas_png_resolution))
         throw disk_uv::Tool_error("--atlas-png needs --resolution between 1 and " +
@@ -512,7 +493,7 @@ int main(int argc, char** argv)
     disk_uv::Output_files outputs;
     std::vector<disk_uv::Output_files::Writer> writers;
     const DS::Atlas_report* report_ptr = nullptr;
-    const disk_uv::Read_changes* changes_ptr = nullptr;
+    const DS_IO::Read_changes* changes_ptr = nullptr;
     const nlohmann::json* several_report = nullptr;
     double read_seconds = 0;
     Mesh mesh;
@@ -557,39 +538,19 @@ int main(int argc, char** argv)
     add_output("--report", report_path, [&](std::ostream& o) {
       nlohmann::json json = several_report != nullptr
                               ? *several_report
-                              : disk_uv::atlas_report_json(input, mesh.number_of_vertices(), *report_ptr,
+                              : DS_IO::atlas_report_json(input, mesh.number_of_vertices(), *report_ptr,
                                                            method_name, packer_name, read_seconds, *changes_ptr);
       // Several pages: the written UVs hold them as UDIM tiles.
       json["packing"]["udim_tiles"] = json["packing"]["pages"].get<std::size_t>() > 1;
       o << json.dump(2) << '\n';
     });
 
-    const DS::Parameterization_method method = DS::parameterization_method_from_string(method_name);
-    DS::Packing_method packer;
-    if(packer_name == "tight") packer = DS::Packing_method::TIGHT;
-    else if(packer_name == "grid") packer = DS::Packing_method::GRID;
-    else throw disk_uv::Tool_error("unknown packer '" + packer_name + "' (expected tight or grid)");
-    if(width != height && packer != DS::Packing_method::TIGHT)
+    if(width != height && packer_name != "tight")
       throw disk_uv::Tool_error("--resolution " + resolution + " is not square: the grid packer's cells are square "
                                 "(use --packer tight)");
 
-    const double inf = std::numeric_limits<double>::infinity();
-    const std::size_t no_budget = (std::numeric_limits<std::size_t>::max)();
-    const auto settings =
-      DS::parameters::number_of_seeds(n).number_of_subsamples(k).merge_threshold(threshold)
-        .parameterization_method(method).use_fallback(!no_fallback)
-        .max_angle_distortion(unbounded ? inf : bound.max_angle_distortion)
-        .max_area_distortion(unbounded ? inf : bound.max_area_distortion)
-        .max_stretch(unbounded ? inf : bound.max_stretch).max_area_scale(unbounded ? inf : bound.max_area_scale)
-        .max_stretch_p95(unbounded ? inf : bound.max_stretch_p95)
-        .min_convexity(unbounded ? 0. : bound.min_convexity)
-        .smooth_borders(!rough_borders)
-        .straighten_borders(!rough_borders)
-        .max_chart_faces(max_chart_faces).max_number_of_charts(max_charts == 0 ? no_budget : max_charts)
-        .packing_method(packer)
-        .texture_resolution(width).texture_height(height).padding_in_texels(padding).texels_per_unit(texels_per_unit)
-        .max_number_of_pages(max_pages).number_of_threads(threads);
-    DS::check_uv_atlas_parameters(settings);
+    options.use_fallback = !no_fallback;
+    const auto settings = DS_IO::atlas_parameters(options);
     const auto keep_going = std::function<bool(const std::string&, std::size_t, std::size_t)>(
       [&display](const std::string& s, std::size_t d, std::size_t t) {
         display(s, d, t);
@@ -619,7 +580,7 @@ int main(int argc, char** argv)
 
     CGAL::Real_timer timer;
     timer.start();
-    const disk_uv::Read_changes changes = disk_uv::read_triangle_mesh(input, mesh, read_options);
+    const DS_IO::Read_changes changes = DS_IO::read_triangle_mesh(input, mesh, read_options);
     read_seconds = timer.time();
     patch = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:patch", 0).first;
     uv = mesh.add_property_map<Mesh::Halfedge_index, Kernel::Point_2>("h:uv", Kernel::Point_2(0, 0)).first;
@@ -696,7 +657,7 @@ int main(int argc, char** argv)
   catch(const DS::Input_error& e)
   {
     display.finish();
-    std::cerr << "disk_uv: error: " << disk_uv::in_user_terms(e.what(), disk_uv::Front_end::command_line)
+    std::cerr << "disk_uv: error: " << DS_IO::in_user_terms(e.what(), DS_IO::Front_end::command_line)
               << std::endl;
     return 1;
   }
