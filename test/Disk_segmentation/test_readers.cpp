@@ -1,5 +1,5 @@
-// The disk_uv tool's mesh readers (mesh_readers.h, ply_reader.h) and input
-// file (input_file.h): every format variant they accept gives the points
+// The package's mesh readers (IO/internal/Mesh_readers.h, Ply_reader.h) and input
+// file (IO/internal/Input_file.h): every format variant they accept gives the points
 // and faces written out by hand here, in the file's order; every refusal is
 // one line naming the line (or byte) and the token; inputs that are not
 // regular files are refused without blocking, and no count is trusted

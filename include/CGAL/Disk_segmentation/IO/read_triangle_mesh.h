@@ -55,7 +55,7 @@ struct Read_options
   // vertices (the mesh is cut there).
   bool repair = false;
   // Polygons of 4 or more vertices are triangulated (ear clipping in the
-  // polygon's plane; a fan if that fails, see polygon_triangulation.h).
+  // polygon's plane; a fan if that fails, see internal/Polygon_triangulation.h).
   bool triangulate = false;
   // Inputs that are not regular files (pipes, devices) are refused unless
   // this is set: they may never end.
@@ -248,7 +248,7 @@ std::string triangle_soup_problem(std::vector<Point>& points,
 }
 
 // Reads a polygon soup in the format named by `ext` (off, obj, ply, stl, ts)
-// from the file's `bytes` (see mesh_readers.h). Throws File_error naming `name`.
+// from the file's `bytes` (see internal/Mesh_readers.h). Throws File_error naming `name`.
 template <typename Point>
 void read_polygon_soup_from(std::string_view bytes, const std::string& ext, const std::string& name,
                             std::vector<Point>& points, std::vector<std::vector<std::size_t> >& polygons)

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The disk_uv tool's strict readers of OFF, OBJ, STL and GOCAD TS polygon
-// soups (PLY: ply_reader.h), parsing a file held in memory. Each keeps the
+// soups (PLY: Ply_reader.h), parsing a file held in memory. Each keeps the
 // file's vertex and face order, allocates no more than the file's bytes can
 // fill, and throws a File_error naming the line (or byte) and the token at
 // fault. Non-finite coordinates are refused here, where the line is known.
