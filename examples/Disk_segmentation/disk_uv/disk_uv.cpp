@@ -545,7 +545,8 @@ int main(int argc, char** argv)
       o << json.dump(2) << '\n';
     });
 
-    if(width != height && packer_name != "tight")
+    // Before the library's own check, to name the user's --resolution; an unknown packer is named first.
+    if(width != height && DS_IO::packing_method_from_string(packer_name) != DS::Packing_method::TIGHT)
       throw disk_uv::Tool_error("--resolution " + resolution + " is not square: the grid packer's cells are square "
                                 "(use --packer tight)");
 
