@@ -6,7 +6,7 @@
 #include "test_meshes.h"
 
 #include <CGAL/Disk_segmentation.h>
-#include <CGAL/Disk_segmentation/internal/Face_group_moves.h>
+#include <CGAL/Disk_segmentation/internal/Chart_selection/Face_group_moves.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

@@ -8,116 +8,21 @@
 
 #include <CGAL/Disk_segmentation/Input_error.h>
 #include <CGAL/Disk_segmentation/Merge_tree.h>
+#include <CGAL/Disk_segmentation/internal/Mesh/Face_partition.h>
+#include <CGAL/Disk_segmentation/internal/Mesh/Indexed_triangle_mesh.h>
+#include <CGAL/Disk_segmentation/internal/Mesh/Region_topology.h>
+#include <CGAL/Disk_segmentation/internal/Parameters/Parameter_checks.h>
+#include <CGAL/Disk_segmentation/internal/Segmentation/Region_merging.h>
 #include <CGAL/Disk_segmentation/parameters.h>
-#include <CGAL/Disk_segmentation/internal/Disk_region_merger.h>
-#include <CGAL/Disk_segmentation/internal/Face_partition.h>
-#include <CGAL/Disk_segmentation/internal/Indexed_triangle_mesh.h>
-#include <CGAL/Disk_segmentation/internal/Parameter_checks.h>
-#include <CGAL/Disk_segmentation/internal/Region_topology.h>
-
-#include <CGAL/assertions.h>
-#include <CGAL/number_type_config.h>
+#include <CGAL/Disk_segmentation/regular_polygon_threshold.h>
 
 #include <boost/graph/graph_traits.hpp>
 
-#include <cmath>
 #include <string>
-#include <type_traits>
 #include <vector>
 
 namespace CGAL {
 namespace Disk_segmentation {
-
-/// \ingroup PkgDiskSegmentationRef
-/// The paper's threshold \f$ \epsilon_N = 2 / \sqrt{N \cot(\pi / N)} \f$
-/// (its Equation 5): one side of a regular `N`-gon over the square root of its
-/// area, i.e.\ the merge score of a regular `N`-gon and a smaller neighbor
-/// sharing one full side. `regular_polygon_threshold(5)` (about 0.7624) is
-/// the default of `merge_disk_regions()`. Constant time and memory.
-///
-/// @throws Input_error if `N < 3`, in release builds too.
-template <typename Integer>
-double regular_polygon_threshold(Integer N)
-{
-  static_assert(std::is_integral<Integer>::value && !std::is_same<Integer, bool>::value,
-                "CGAL::Disk_segmentation::regular_polygon_threshold() takes an integer number of sides");
-  if(!(N >= 3))
-    throw Input_error("regular_polygon_threshold: a polygon has at least 3 sides (got " + std::to_string(N) + ")");
-  const double n = static_cast<double>(N);
-  return 2. / std::sqrt(n / std::tan(CGAL_PI / n));
-}
-
-namespace internal {
-
-inline double checked_merge_threshold(double eps)
-{
-  if(!(eps >= 0.) || !std::isfinite(eps))
-    throw Input_error("merge_threshold must be a finite number >= 0");
-  return eps;
-}
-
-template <typename NamedParameters>
-double merge_threshold_parameter(const NamedParameters& np)
-{
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  return checked_merge_threshold(
-    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::merge_threshold),
-                     regular_polygon_threshold(default_merge_threshold_sides)));
-}
-
-// `labels` numbers disk regions canonically; merges them and renumbers.
-// `tree`, if not null, receives the merges and the leaf of every face.
-inline std::size_t merge_regions(const Indexed_triangle_mesh& m, std::vector<Index>& labels,
-                                 std::size_t number_of_regions, double threshold, Merge_tree* tree = nullptr)
-{
-  if(tree != nullptr)
-  {
-    tree->number_of_leaves = number_of_regions;
-    tree->face_leaves.assign(labels.begin(), labels.end());
-  }
-  Disk_region_merger merger(m, labels, number_of_regions);
-  merger.run(threshold);
-  if(tree != nullptr)
-    tree->merges = merger.merges();
-  return make_canonical(labels);
-}
-
-// The `merge_tree` named parameter: a Merge_tree* or null.
-template <typename NamedParameters>
-Merge_tree* merge_tree_parameter(const NamedParameters& np)
-{
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  return choose_parameter(get_parameter(np, Disk_segmentation::internal_np::merge_tree),
-                          static_cast<Merge_tree*>(nullptr));
-}
-
-// A Merge_tree lists the leaves of the faces in the order of faces(tm),
-// the indexed mesh in its own (Indexed_triangle_mesh::input_face): from
-// the mesh's order to the input's, in place.
-inline void face_leaves_to_input_order(const Indexed_triangle_mesh& m, Merge_tree& tree)
-{
-  if(m.input_face.empty() || tree.face_leaves.size() != m.number_of_faces())
-    return;
-  std::vector<std::size_t> leaves(tree.face_leaves.size());
-  for(std::size_t f = 0; f < leaves.size(); ++f)
-    leaves[m.input_face[f]] = tree.face_leaves[f];
-  tree.face_leaves.swap(leaves);
-}
-
-// A copy of `tree` with its faces in the indexed mesh's order. A tree of
-// another size is copied as it is, for the checks to name it.
-inline Merge_tree face_leaves_to_mesh_order(const Indexed_triangle_mesh& m, const Merge_tree& tree)
-{
-  Merge_tree out = tree;
-  if(!m.input_face.empty() && tree.face_leaves.size() == m.number_of_faces())
-    for(std::size_t f = 0; f < out.face_leaves.size(); ++f)
-      out.face_leaves[f] = tree.face_leaves[m.input_face[f]];
-  return out;
-}
-
-} // namespace internal
 
 /// \ingroup PkgDiskSegmentationRef
 ///

@@ -5,7 +5,7 @@
 #define CGAL_DISK_SEGMENTATION_PATCH_FACES_H
 
 #include <CGAL/Disk_segmentation/Input_error.h>
-#include <CGAL/Disk_segmentation/internal/Parameter_checks.h>
+#include <CGAL/Disk_segmentation/internal/Parameters/Parameter_checks.h>
 
 #include <boost/graph/graph_traits.hpp>
 #include <boost/property_map/property_map.hpp>

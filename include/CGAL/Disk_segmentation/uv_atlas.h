@@ -6,46 +6,33 @@
 
 #include <CGAL/disable_warnings.h>
 
+#include <CGAL/Disk_segmentation/Atlas_report.h>
+#include <CGAL/Disk_segmentation/Merge_tree.h>
+#include <CGAL/Disk_segmentation/internal/Atlas/Atlas_pipeline.h>
+#include <CGAL/Disk_segmentation/internal/Execution/Progress.h>
+#include <CGAL/Disk_segmentation/internal/Packing/Packing_settings.h>
+#include <CGAL/Disk_segmentation/internal/Packing/Patch_packing.h>
+#include <CGAL/Disk_segmentation/internal/Parameters/Parameter_checks.h>
+#include <CGAL/Disk_segmentation/internal/Parameters/Parameterization_settings.h>
+#include <CGAL/Disk_segmentation/internal/Segmentation/Region_merging.h>
+#include <CGAL/Disk_segmentation/internal/Segmentation/Region_refinement.h>
+#include <CGAL/Disk_segmentation/internal/Segmentation/Segmentation_pipeline.h>
+#include <CGAL/Disk_segmentation/internal/Segmentation/Voronoi_fps_labels.h>
 #include <CGAL/Disk_segmentation/pack_patches.h>
 #include <CGAL/Disk_segmentation/parameterize_patches.h>
+#include <CGAL/Disk_segmentation/parameters.h>
 #include <CGAL/Disk_segmentation/segment_into_disks.h>
-#include <CGAL/Disk_segmentation/internal/Face_group_moves.h>
-#include <CGAL/Disk_segmentation/internal/Parameter_checks.h>
-#include <CGAL/Disk_segmentation/internal/Progress.h>
 
 #include <CGAL/Dynamic_property_map.h>
 #include <CGAL/Real_timer.h>
 
 #include <boost/graph/graph_traits.hpp>
 
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
 namespace Disk_segmentation {
-
-/// \ingroup PkgDiskSegmentationRef
-/// What `uv_atlas()` did, stage by stage. Times are wall-clock seconds.
-struct Atlas_report
-{
-  /// Number of faces of the mesh.
-  std::size_t number_of_faces = 0;
-  /// Voronoi cells (at least the number of connected components).
-  std::size_t number_of_voronoi_cells = 0;
-  /// Disks after refinement, before merging.
-  std::size_t number_of_refined_regions = 0;
-  /// Charts of the atlas (patches after merging, plus pieces of split patches).
-  std::size_t number_of_charts = 0;
-  /// Per-chart methods, fallbacks and distortion.
-  Parameterization_report parameterization;
-  /// Packing efficiency and texel density.
-  Packing_report packing;
-  /// With `face_polygon_map`: polygons split by the charts and moved whole into one of them,
-  /// and those left across charts (a move would have left a chart that is not a disk).
-  std::size_t polygons_moved_whole = 0, polygons_left_across_charts = 0;
-
-  double voronoi_seconds = 0, refine_seconds = 0, merge_seconds = 0;
-  double parameterization_seconds = 0, packing_seconds = 0, total_seconds = 0;
-};
 
 /// \ingroup PkgDiskSegmentationRef
 ///
@@ -73,84 +60,6 @@ void check_uv_atlas_parameters(const NamedParameters& np = parameters::default_v
   internal::parameterization_settings(np);
   internal::packing_settings(np);
 }
-
-namespace internal {
-
-// uv_atlas() up to the packing: the patches of `tm` in `face_patch_map`,
-// their charts' UVs in `uv_map` (not yet packed), the merge tree and the
-// seeds. Shared with uv_atlas_of_meshes(). `np` is a chain of
-// canonical_parameters(); the other values come checked in `settings` and
-// `packing`.
-template <typename TriangleMesh, typename FacePatchMap, typename UVMap, typename NamedParameters>
-Atlas_report segment_and_parameterize(const TriangleMesh& tm, FacePatchMap face_patch_map, UVMap uv_map,
-                                      const NamedParameters& np, const Parameterization_settings& settings,
-                                      const Packing_settings& packing, Progress& progress, Merge_tree& tree,
-                                      std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& seeds)
-{
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  using CGAL::parameters::is_default_parameter;
-  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
-  Atlas_report report;
-  CGAL::Real_timer timer;
-  {
-    // One indexed mesh for the segmentation and the parameterization.
-    const Indexed_input<TriangleMesh> input(tm, np);
-    {
-      std::vector<Index> labels;
-      const Segmentation_steps steps = segment_indexed(
-        input.mesh, input.face_handles, np, labels, &tree,
-        choose_parameter(get_parameter(np, Disk_segmentation::internal_np::smooth_borders), true), progress);
-      // Charts only split from here: too many patches for the padding can
-      // be told before the parameterization.
-      check_packing_capacity(packing, steps.patches);
-      write_face_labels(input.face_handles, labels, face_patch_map);
-      for(Index s : steps.seeds)
-        seeds.push_back(input.face_handles[s]);
-      report.number_of_faces = input.mesh.number_of_faces();
-      report.number_of_voronoi_cells = steps.voronoi_cells;
-      report.number_of_refined_regions = steps.refined_regions;
-      report.voronoi_seconds = steps.voronoi_seconds;
-      report.refine_seconds = steps.refine_seconds;
-      report.merge_seconds = steps.merge_seconds;
-    }
-
-    timer.start();
-    report.parameterization =
-      parameterize_indexed_patches(tm, input, face_patch_map, uv_map, settings, progress, &tree);
-    if constexpr(!is_default_parameter<NamedParameters, Disk_segmentation::internal_np::face_polygon_map_t>::value)
-    {
-      const auto polygon_map = checked_face_group_map<TriangleMesh>(
-        get_parameter(np, Disk_segmentation::internal_np::face_polygon_map));
-      typedef typename boost::property_traits<std::decay_t<decltype(polygon_map)> >::value_type Polygon_id;
-      std::vector<Polygon_id> polygon_of;
-      polygon_of.reserve(input.face_handles.size());
-      for(face_descriptor f : input.face_handles)
-        polygon_of.push_back(get(polygon_map, f));
-      const std::vector<std::size_t> ids = read_face_labels(input.face_handles, face_patch_map);
-      std::vector<Index> labels(ids.begin(), ids.end());
-      const Face_group_moves moves = keep_polygons_whole(input.mesh, polygon_of, labels);
-      report.polygons_moved_whole = moves.moved;
-      report.polygons_left_across_charts = moves.left;
-      if(moves.moved > 0)
-      {
-        // The charts are parameterized again, each whole, without the bound:
-        // a split would cut polygons again.
-        write_face_labels(input.face_handles, labels, face_patch_map);
-        Parameterization_settings unbounded = settings;
-        unbounded.bound = Distortion_bound::unbounded();
-        report.parameterization =
-          parameterize_indexed_patches(tm, input, face_patch_map, uv_map, unbounded, progress, nullptr);
-      }
-    }
-    face_leaves_to_input_order(input.mesh, tree);
-    report.number_of_charts = report.parameterization.charts.size();
-    report.parameterization_seconds = timer.time();
-  }
-  return report;
-}
-
-} // namespace internal
 
 /// \ingroup PkgDiskSegmentationRef
 ///

@@ -38,7 +38,7 @@ echo "== install $build_dir into $prefix"
   || { cat "$prefix/install.log"; fail "cmake --install failed"; }
 
 for header in CGAL/Disk_segmentation.h CGAL/Disk_segmentation/segment_into_disks.h \
-              CGAL/Disk_segmentation/parameters.h CGAL/Disk_segmentation/internal/Voronoi_fps.h; do
+              CGAL/Disk_segmentation/parameters.h CGAL/Disk_segmentation/internal/Segmentation/Voronoi_fps.h; do
   [ -f "$prefix/include/$header" ] || fail "$header was not installed under $prefix/include"
 done
 config=$(find "$prefix" -path '*/cmake/Disk_segmentation/Disk_segmentationConfig.cmake' -print -quit)

@@ -5,7 +5,7 @@
 #define CGAL_DISK_SEGMENTATION_IO_UDIM_TILES_H
 
 #include <CGAL/Disk_segmentation/Input_error.h>
-#include <CGAL/Disk_segmentation/internal/Parameter_checks.h>
+#include <CGAL/Disk_segmentation/internal/Parameters/Parameter_checks.h>
 
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/number_utils.h>

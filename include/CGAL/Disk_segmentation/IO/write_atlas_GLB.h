@@ -6,7 +6,7 @@
 
 #include <CGAL/Disk_segmentation/Input_error.h>
 #include <CGAL/Disk_segmentation/IO/internal/Atlas_corners.h>
-#include <CGAL/Disk_segmentation/internal/Parameter_checks.h>
+#include <CGAL/Disk_segmentation/internal/Parameters/Parameter_checks.h>
 
 #include <tiny_gltf.h>
 

@@ -5,7 +5,7 @@
 #define CGAL_DISK_SEGMENTATION_IO_WRITE_ATLAS_OBJ_H
 
 #include <CGAL/Disk_segmentation/IO/internal/Atlas_corners.h>
-#include <CGAL/Disk_segmentation/internal/Parameter_checks.h>
+#include <CGAL/Disk_segmentation/internal/Parameters/Parameter_checks.h>
 
 #include <algorithm>
 #include <array>

@@ -1,0 +1,420 @@
+// Copyright (c) 2026 The Disk_segmentation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_DISK_SEGMENTATION_INTERNAL_PACKING_CHART_LAYOUTS_H
+#define CGAL_DISK_SEGMENTATION_INTERNAL_PACKING_CHART_LAYOUTS_H
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Disk_segmentation/Input_error.h>
+#include <CGAL/Disk_segmentation/internal/Packing/Chart_packer.h>
+#include <CGAL/Disk_segmentation/internal/Packing/Chart_set.h>
+#include <CGAL/Disk_segmentation/internal/Packing/Packing_settings.h>
+#include <CGAL/Disk_segmentation/internal/Packing/Profile_packer.h>
+#include <CGAL/Disk_segmentation/internal/Packing/Raster_packer.h>
+#include <CGAL/Disk_segmentation/internal/Packing/packing_geometry.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <sstream>
+#include <vector>
+
+namespace CGAL {
+namespace Disk_segmentation {
+namespace internal {
+
+// Cells of at least one texel, at most 512 across: each trial costs the
+// columns times the charts' widths in cells.
+// Measured on 10 meshes of CGAL's data: 256 columns pack 0.551 of the
+// square (median), 512 0.594, 1024 0.588 at 2.4 times the time of 512.
+inline std::size_t shape_columns(const Packing_settings& s)
+{
+  return (std::min)(std::size_t(512), static_cast<std::size_t>(s.resolution));
+}
+
+// The page's rows of square cells (its height over a cell's side, rounded
+// down: a partial row is left empty).
+inline std::size_t shape_rows(const Packing_settings& s, std::size_t columns)
+{
+  return (std::max)(std::size_t(1),
+                    static_cast<std::size_t>(std::floor(page_aspect(s) * double(columns) * (1. + 1e-12))));
+}
+
+// The padding in whole cells, rounded up.
+inline std::size_t shape_pad_cells(const Packing_settings& s, std::size_t columns)
+{
+  return (std::max)(std::size_t(1), static_cast<std::size_t>(std::ceil(s.padding * double(columns) / s.resolution)));
+}
+
+// The charts as the shape packers read them. Not copyable: `charts` points
+// into the other members.
+struct Shape_input
+{
+  std::vector<Packing_point> framed;  // corners in the chart's frame
+  std::vector<unsigned char> border_edges;
+  std::vector<Profile_chart> charts;
+  double total_area = 0.;  // of the charts at one UV unit per unit of length
+
+  template <typename TriangleMesh>
+  Shape_input(const Chart_set<TriangleMesh>& set, const std::vector<double>& density)
+  {
+    const std::size_t n = set.size();
+    framed.reserve(set.corners.size());
+    border_edges.reserve(set.corners.size() / 3);
+    charts.resize(n);
+    std::vector<std::size_t> first_corner(1, 0);  // of each chart in `framed`, and the end
+    for(std::size_t p = 0; p < n; ++p)
+    {
+      // Only the triangles with an edge on the border: a chart's lowest and
+      // highest point over any vertical slab lie on its border, and its
+      // border bounds the cells it covers (about the square root of the
+      // chart's triangles).
+      for(std::size_t i = set.first_face[p]; i < set.first_face[p + 1]; ++i)
+      {
+        if(set.border_edges[i] == 0)
+          continue;
+        for(std::size_t j = 0; j < 3; ++j)
+          framed.push_back(set.rotation[p](set.corners[3 * i + j]));
+        border_edges.push_back(set.border_edges[i]);
+      }
+      first_corner.push_back(framed.size());
+      charts[p].density = density[p];
+      charts[p].area = set.uv_area[p];
+      total_area += density[p] * density[p] * set.uv_area[p];
+    }
+    for(std::size_t p = 0; p < n; ++p)
+    {
+      charts[p].corners = framed.data() + first_corner[p];
+      charts[p].border_edges = border_edges.data() + first_corner[p] / 3;
+      charts[p].number_of_corners = first_corner[p + 1] - first_corner[p];
+    }
+  }
+  Shape_input(const Shape_input&) = delete;
+  Shape_input& operator=(const Shape_input&) = delete;
+};
+
+// The similarities of the charts placed by a shape packer at `scale`.
+template <typename TriangleMesh>
+std::vector<Chart_similarity> shape_similarities(const Chart_set<TriangleMesh>& charts,
+                                                 const std::vector<Profile_placement>& placement,
+                                                 const std::vector<double>& density, double scale)
+{
+  std::vector<Chart_similarity> result(charts.size());
+  for(std::size_t p = 0; p < charts.size(); ++p)
+  {
+    Chart_similarity& sim = result[p];
+    sim.rotation = charts.rotation[p];
+    Packing_box b = charts.box[p];
+    for(int t = 0; t < placement[p].turns; ++t)
+    {
+      sim.rotation = sim.rotation.quarter_turned();
+      b = b.quarter_turned();
+    }
+    if(placement[p].diagonal)
+    {
+      sim.rotation = sim.rotation.eighth_turned();
+      b = Packing_box();
+      for(std::size_t k = 3 * charts.first_face[p]; k < 3 * charts.first_face[p + 1]; ++k)
+        b.add(sim.rotation(charts.corners[k]));
+    }
+    sim.scale = scale * density[p];
+    sim.tx = placement[p].x - sim.scale * b.xmin;
+    sim.ty = placement[p].y - sim.scale * b.ymin;
+  }
+  return result;
+}
+
+// Above this many charts only the raster packer runs; its search starts at
+// this multiple of the rectangles' scale (see shape_layout()).
+constexpr std::size_t profile_packer_max_charts = 64;
+constexpr double raster_start_over_rectangles = 1.2;
+
+// The better of the two shape packers' layouts (profile, then raster) at
+// the largest scale each reaches, if that is above `rectangle_scale` (the
+// rectangle packing's); else an empty vector.
+template <typename TriangleMesh>
+std::vector<Chart_similarity> shape_layout(const Chart_set<TriangleMesh>& charts, const Packing_settings& s,
+                                             const std::vector<double>& density, double rectangle_scale,
+                                             double& global_scale)
+{
+  const std::size_t n = charts.size();
+  const std::size_t columns = shape_columns(s);
+  const std::size_t pad_cells = shape_pad_cells(s, columns);
+  const Shape_input shapes(charts, density);
+  const std::vector<Profile_chart>& input = shapes.charts;
+  const double total = shapes.total_area;
+  const std::size_t rows = shape_rows(s, columns);
+  const double hi = total > 0. ? std::sqrt(page_aspect(s) / total) : rectangle_scale;
+  std::size_t trial = 0;  // reported, after the rectangles' (see report_packing_trial())
+
+  // The profile packer's largest scale in [rectangle_scale, hi) at which
+  // every chart fits, to 1 percent (about seven trials), and its
+  // placements; 0 if it does not fit them at rectangle_scale. Measured on
+  // 90 atlases (30 meshes, 3 bounds): the same UV area as to 0.2 percent on
+  // the mean, 10 % less packing time.
+  auto profile_search = [&](std::vector<Profile_placement>& best) {
+    Profile_packer packer(columns, pad_cells, rows);
+    packer.set_parallel(s.threads != 1);
+    std::vector<Profile_placement> placement;
+    double lo = rectangle_scale, top = hi;
+    report_packing_trial(s, trial);
+    if(!(top > lo) || !packer.run(input, lo, placement))
+      return 0.;
+    best.swap(placement);
+    while(top - lo > 1e-2 * lo)
+    {
+      const double mid = 0.5 * (lo + top);
+      report_packing_trial(s, trial);
+      if(packer.run(input, mid, placement))
+      {
+        lo = mid;
+        best.swap(placement);
+      }
+      else
+        top = mid;
+    }
+    return lo;
+  };
+
+  // The rows a raster packing uses grow about as the square of the scale:
+  // each trial aims at the scale that would just fill the square, then
+  // bisection between the best fit and the smallest failure, to 1 percent
+  // (4 to 6 trials on 10 meshes of CGAL's data). It starts from the
+  // profile packer's scale and gives up if it cannot reach it. Without
+  // the profile packer (many charts), it starts 20 % above the rectangles'
+  // scale, about where it ends, and a failure only aims lower.
+  auto raster_search = [&](double profile_scale, std::vector<Profile_placement>& best) {
+    Raster_packer packer(columns, pad_cells, rows);
+    packer.set_parallel(s.threads != 1);
+    std::vector<Profile_placement> placement;
+    const bool after_profile = profile_scale > 0.;
+    double fit = 0., fail = hi;
+    double scale = after_profile ? (std::max)(profile_scale, rectangle_scale)
+                                 : (std::min)(hi, raster_start_over_rectangles * rectangle_scale);
+    const double target = double(rows);
+    const double tol = 0.01;
+    const int max_trials = 6;
+    for(int raster_trial = 0; raster_trial < max_trials && fail > fit * (1. + tol); ++raster_trial)
+    {
+      report_packing_trial(s, trial);
+      const bool packed = packer.run(input, scale, placement);
+      const double used = double(packer.used_rows());
+      if(packed)
+      {
+        fit = scale;
+        best.swap(placement);
+      }
+      else if(fit == 0. && after_profile)
+        break;
+      else
+        fail = (std::min)(fail, scale);
+      double next = used > 0. ? scale * std::sqrt(target / used) : 0.;
+      if(packed && !(next > fit * (1. + 0.5 * tol)))
+        next = fit * (1. + tol);
+      // Before any fit, bisect from the rectangles' scale, which every chart
+      // fits: a trial where some chart is wider than the square at any turn
+      // (a long chart) says nothing about the rows.
+      if(!(next > fit) || !(next < fail))
+        next = 0.5 * ((fit > 0. ? fit : rectangle_scale) + fail);
+      scale = next;
+    }
+    return fit;
+  };
+
+  // With many charts the raster packer alone packs as much (30 meshes,
+  // above 64 charts: -0.019 to +0.008 of the square, median +0.001) in
+  // 0.4-0.7 of the time (ChineseDragon-10kv 256 charts, b9_mesh 455,
+  // cheese 922); with few, the profile packer's layout or scale often wins
+  // (anchor +0.135, head +0.090). The two searches could run side by side
+  // if the raster one did not start from the profile packer's scale; on 30
+  // atlases that took 1.06 times the packing time with one thread, 0.8
+  // with two, for the same median UV area. Within each search, the turns
+  // of each chart run side by side.
+  std::vector<Profile_placement> best, raster_best;
+  double lo = 0.;
+  within_arena(s.threads, [&] {
+    if(n <= profile_packer_max_charts)
+      lo = profile_search(best);
+    const double fit = raster_search(lo, raster_best);
+    if(fit > lo)
+    {
+      lo = fit;
+      best.swap(raster_best);
+    }
+  });
+  if(!(lo > rectangle_scale * (1. + 1e-3)))
+    return std::vector<Chart_similarity>();
+  global_scale = lo;
+  return shape_similarities(charts, best, density, lo);
+}
+
+// Extra gap, in UV units, on top of the requested padding, that absorbs the
+// rounding of the final similarity (coordinates are at most 1).
+constexpr double packing_rounding_margin = 1e-12;
+
+// The layout at the fixed density `s.texels_per_unit`: pages are filled
+// one after the other by the raster packer, each with the charts left that
+// fit on it, largest first; `page_of_chart` says where each went.
+template <typename TriangleMesh>
+std::vector<Chart_similarity> paged_layout(const Chart_set<TriangleMesh>& charts, const Packing_settings& s,
+                                           const std::vector<double>& density, double& global_scale,
+                                           std::vector<std::size_t>& page_of_chart)
+{
+  const std::size_t n = charts.size();
+  // Texels per unit of the input's length = scale * resolution * length_scale.
+  const double scale = s.texels_per_unit / (s.resolution * charts.length_scale);
+  global_scale = scale;
+  const Shape_input shapes(charts, density);
+  // Pages never hold more than their area: a quick "no" before any packing.
+  const double least_pages = shapes.total_area * scale * scale / page_aspect(s);
+  auto too_many_pages = [&] {
+    std::ostringstream message;
+    message << "pack_patches: at texels_per_unit " << s.texels_per_unit << " the charts need more than "
+            << s.max_pages << " pages of " << texture_size(s) << " (max_number_of_pages); lower "
+            << "texels_per_unit or raise texture_resolution or max_number_of_pages";
+    return Input_error(message.str());
+  };
+  if(!(least_pages <= static_cast<double>(s.max_pages)))
+    throw too_many_pages();
+
+  const std::size_t columns = shape_columns(s);
+  Raster_packer packer(columns, shape_pad_cells(s, columns), shape_rows(s, columns));
+  packer.set_parallel(s.threads != 1);
+  std::vector<Profile_placement> placement(n), on_page;
+  std::vector<bool> placed;
+  std::vector<std::size_t> left = largest_first(shapes.charts), still_left;
+  page_of_chart.assign(n, 0);
+  std::size_t trial = 0;
+  for(std::size_t page = 0; !left.empty(); ++page)
+  {
+    if(page == s.max_pages)
+      throw too_many_pages();
+    report_packing_trial(s, trial);
+    std::size_t count = 0;
+    within_arena(s.threads, [&] { count = packer.fill_page(shapes.charts, left, scale, on_page, placed); });
+    if(count == 0)
+    {
+      // None of them fits an empty page: the largest is named.
+      const std::size_t p = left.front();
+      const double to_texels = scale * density[p] * s.resolution;
+      std::ostringstream message;
+      message << "pack_patches: at texels_per_unit " << s.texels_per_unit << ", " << patch_name(p) << " is "
+              << std::ceil(charts.box[p].width() * to_texels) << " x "
+              << std::ceil(charts.box[p].height() * to_texels) << " texels and does not fit a page of "
+              << texture_size(s) << " (texture_resolution) with padding_in_texels " << s.padding
+              << "; lower texels_per_unit or raise texture_resolution";
+      throw Input_error(message.str());
+    }
+    still_left.clear();
+    for(std::size_t i : left)
+      if(placed[i])
+      {
+        placement[i] = on_page[i];
+        page_of_chart[i] = page;
+      }
+      else
+        still_left.push_back(i);
+    left.swap(still_left);
+  }
+  return shape_similarities(charts, placement, density, scale);
+}
+
+template <typename TriangleMesh>
+std::vector<Chart_similarity> tight_layout(const Chart_set<TriangleMesh>& charts, const Packing_settings& s,
+                                           double& global_scale, std::vector<std::size_t>& page_of_chart)
+{
+  const std::size_t n = charts.size();
+  const double pad = s.padding / s.resolution + packing_rounding_margin;
+  // Sizes at one UV unit per 3D unit of length.
+  std::vector<double> density(n), w(n), h(n);
+  for(std::size_t p = 0; p < n; ++p)
+  {
+    density[p] = std::sqrt(charts.surface_area[p] / charts.uv_area[p]);
+    w[p] = density[p] * charts.box[p].width();
+    h[p] = density[p] * charts.box[p].height();
+  }
+  if(s.texels_per_unit > 0.)
+    return paged_layout(charts, s, density, global_scale, page_of_chart);
+  page_of_chart.assign(n, 0);
+  // Rectangles grown by the padding on their right and top fill [pad, 1]^2:
+  // this leaves the padding between any two of them and along every side.
+  const Square_packing packing = pack_in_rectangle(w, h, pad, 1. - pad, page_aspect(s) - pad);
+  if(!(packing.scale > 0.))
+  {
+    std::ostringstream message;
+    message << "pack_patches: padding_in_texels (" << s.padding << ") is too large to place " << n
+            << " charts on a texture of " << texture_size(s);
+    throw Input_error(message.str());
+  }
+  global_scale = packing.scale;
+  // The chart shapes often nest better than their rectangles.
+  {
+    std::vector<Chart_similarity> shaped = shape_layout(charts, s, density, packing.scale, global_scale);
+    if(!shaped.empty())
+      return shaped;
+  }
+
+  std::vector<Chart_similarity> result(n);
+  for(std::size_t p = 0; p < n; ++p)
+  {
+    const Packed_rectangle& rect = packing.rectangles[p];
+    Chart_similarity& sim = result[p];
+    sim.rotation = charts.rotation[p];
+    Packing_box b = charts.box[p];
+    if(rect.rotated)
+    {
+      sim.rotation = sim.rotation.quarter_turned();
+      b = b.quarter_turned();
+    }
+    sim.scale = packing.scale * density[p];
+    sim.tx = pad + rect.x - sim.scale * b.xmin;
+    sim.ty = pad + rect.y - sim.scale * b.ymin;
+  }
+  return result;
+}
+
+template <typename TriangleMesh>
+std::vector<Chart_similarity> grid_layout(const Chart_set<TriangleMesh>& charts, const Packing_settings& s)
+{
+  const std::size_t n = charts.size();
+  // A step or two each: the double square root is within one of the integer one.
+  std::size_t columns = static_cast<std::size_t>(std::sqrt(static_cast<double>(n)));
+  while(columns * columns < n) ++columns;
+  while(columns > 1 && (columns - 1) * (columns - 1) >= n) --columns;
+
+  // Cells tile [pad/2, 1 - pad/2]^2 and every chart keeps pad/2 inside its
+  // cell: charts are pad apart from each other and from the sides.
+  const double pad = s.padding / s.resolution + packing_rounding_margin;
+  const double cell = (1. - pad) / static_cast<double>(columns);
+  const double room = cell - pad;
+  if(!(room > 0.))
+  {
+    std::ostringstream message;
+    message << "pack_patches: padding_in_texels (" << s.padding << ") is too large for a grid of " << columns
+            << " x " << columns << " cells on a texture of " << s.resolution << " texels";
+    throw Input_error(message.str());
+  }
+
+  std::vector<Chart_similarity> result(n);
+  for(std::size_t p = 0; p < n; ++p)
+  {
+    const Packing_box& b = charts.box[p];
+    Chart_similarity& sim = result[p];
+    sim.rotation = charts.rotation[p];
+    sim.scale = room / (std::max)(b.width(), b.height());
+    const double cx = 0.5 * pad + (static_cast<double>(p % columns) + 0.5) * cell;
+    const double cy = 0.5 * pad + (static_cast<double>(p / columns) + 0.5) * cell;
+    sim.tx = cx - sim.scale * 0.5 * (b.xmin + b.xmax);
+    sim.ty = cy - sim.scale * 0.5 * (b.ymin + b.ymax);
+  }
+  return result;
+}
+
+} // namespace internal
+} // namespace Disk_segmentation
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_DISK_SEGMENTATION_INTERNAL_PACKING_CHART_LAYOUTS_H

@@ -1,0 +1,54 @@
+// Copyright (c) 2026 The Disk_segmentation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_DISK_SEGMENTATION_INTERNAL_PARAMETERIZATION_CHART_RESTRICTION_H
+#define CGAL_DISK_SEGMENTATION_INTERNAL_PARAMETERIZATION_CHART_RESTRICTION_H
+
+#include <CGAL/Disk_segmentation/internal/Parameterization/Chart_parameterization.h>
+#include <CGAL/Disk_segmentation/internal/Mesh/Indexed_triangle_mesh.h>
+
+#include <algorithm>
+#include <array>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Disk_segmentation {
+namespace internal {
+
+// Gives chart `c` (a sub-disk of `parent`) the UVs that `parent` has at its
+// vertices. An injective map restricted to a sub-disk is still injective,
+// so a valid parent gives a valid child at no solver cost; the result is
+// still validated. `slot` is scratch of the mesh's vertex count, all
+// no_index, and left so. Returns what is wrong with the child's UVs, or an
+// empty string.
+inline std::string restrict_chart(const Chart& parent, Chart& c, std::vector<Index>& slot)
+{
+  for(Index i = 0; i < parent.vertices.size(); ++i)
+    slot[parent.vertices[i]] = i;
+  c.uv.assign(c.vertices.size(), {{ 0., 0. }});
+  bool inside = true;
+  for(Index i = 0; i < c.vertices.size(); ++i)
+  {
+    const Index p = slot[c.vertices[i]];
+    if(p == no_index)
+      inside = false;
+    else
+      c.uv[i] = parent.uv[p];
+  }
+  for(Index v : parent.vertices)
+    slot[v] = no_index;
+  if(!inside)
+    return "not a part of its parent";
+  const std::vector<Index> border = chart_border_loop(c);
+  if(border.empty())
+    return "chart is not a disk";
+  return chart_uv_problem(c, c.uv, border);
+}
+
+} // namespace internal
+} // namespace Disk_segmentation
+} // namespace CGAL
+
+#endif // CGAL_DISK_SEGMENTATION_INTERNAL_PARAMETERIZATION_CHART_RESTRICTION_H

@@ -1,0 +1,92 @@
+// Copyright (c) 2026 The Disk_segmentation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_DISK_SEGMENTATION_INTERNAL_PARAMETERS_PARAMETERIZATION_SETTINGS_H
+#define CGAL_DISK_SEGMENTATION_INTERNAL_PARAMETERS_PARAMETERIZATION_SETTINGS_H
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Disk_segmentation/Distortion_bound.h>
+#include <CGAL/Disk_segmentation/Input_error.h>
+#include <CGAL/Disk_segmentation/Parameterization_method.h>
+#include <CGAL/Disk_segmentation/default_values.h>
+#include <CGAL/Disk_segmentation/internal/Chart_selection/Chart_merging.h>
+#include <CGAL/Disk_segmentation/internal/Parameters/Parameter_checks.h>
+#include <CGAL/Disk_segmentation/parameters.h>
+
+#include <cstddef>
+
+namespace CGAL {
+namespace Disk_segmentation {
+namespace internal {
+
+struct Parameterization_settings
+{
+  Parameterization_method method;
+  bool use_fallback, require_disks;
+  unsigned int threads;
+  Distortion_bound bound;
+  std::size_t max_chart_faces;
+  std::size_t max_charts;  // no_chart_budget without a budget
+  bool smooth_borders, merge_charts, straighten_borders;
+};
+
+// The distortion bound from its named parameters.
+template <typename NamedParameters>
+Distortion_bound distortion_bound_parameters(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Distortion_bound b =
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::distortion_bound), Distortion_bound());
+  b.max_angle_distortion =
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::max_angle_distortion), b.max_angle_distortion);
+  b.max_area_distortion =
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::max_area_distortion), b.max_area_distortion);
+  b.max_stretch = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::max_stretch), b.max_stretch);
+  b.max_area_scale =
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::max_area_scale), b.max_area_scale);
+  b.max_stretch_p95 =
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::max_stretch_p95), b.max_stretch_p95);
+  b.min_convexity = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::min_convexity), b.min_convexity);
+  b.check();
+  return b;
+}
+
+// The named parameters of parameterize_patches(), checked.
+template <typename NamedParameters>
+Parameterization_settings parameterization_settings(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Parameterization_settings s;
+  s.method = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::parameterization_method),
+                              default_parameterization_method);
+  s.use_fallback = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::use_fallback), true);
+  s.require_disks = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::require_disk_patches), true);
+  s.threads = number_of_threads_parameter(np);
+  s.bound = distortion_bound_parameters(np);
+  s.smooth_borders = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::smooth_borders), true);
+  s.merge_charts = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::merge_charts), true);
+  s.straighten_borders =
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::straighten_borders), true);
+  s.max_chart_faces = count_parameter(
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::max_chart_faces), default_max_chart_faces),
+    "max_chart_faces");
+  if(s.max_chart_faces < 1)
+    throw Input_error("max_chart_faces must be >= 1");
+  s.max_charts = count_parameter(
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::max_number_of_charts), no_chart_budget),
+    "max_number_of_charts");
+  if(s.max_charts < 1)
+    throw Input_error("max_number_of_charts must be >= 1");
+  return s;
+}
+
+} // namespace internal
+} // namespace Disk_segmentation
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_DISK_SEGMENTATION_INTERNAL_PARAMETERS_PARAMETERIZATION_SETTINGS_H

@@ -1,0 +1,115 @@
+// Copyright (c) 2026 The Disk_segmentation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_DISK_SEGMENTATION_INTERNAL_SEGMENTATION_SEGMENTATION_PIPELINE_H
+#define CGAL_DISK_SEGMENTATION_INTERNAL_SEGMENTATION_SEGMENTATION_PIPELINE_H
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Disk_segmentation/Merge_tree.h>
+#include <CGAL/Disk_segmentation/default_values.h>
+#include <CGAL/Disk_segmentation/internal/Execution/Progress.h>
+#include <CGAL/Disk_segmentation/internal/Mesh/Face_partition.h>
+#include <CGAL/Disk_segmentation/internal/Mesh/Indexed_triangle_mesh.h>
+#include <CGAL/Disk_segmentation/internal/Parameters/Canonical_parameters.h>
+#include <CGAL/Disk_segmentation/internal/Parameters/Parameter_checks.h>
+#include <CGAL/Disk_segmentation/internal/Segmentation/Border_smoother.h>
+#include <CGAL/Disk_segmentation/internal/Segmentation/Region_merging.h>
+#include <CGAL/Disk_segmentation/internal/Segmentation/Region_refinement.h>
+#include <CGAL/Disk_segmentation/internal/Segmentation/Voronoi_fps.h>
+#include <CGAL/Disk_segmentation/internal/Segmentation/Voronoi_fps_labels.h>
+#include <CGAL/Disk_segmentation/parameters.h>
+
+#include <CGAL/Real_timer.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Disk_segmentation {
+namespace internal {
+
+// Sizes and wall-clock times of the three steps of one segmentation.
+struct Segmentation_steps
+{
+  std::size_t voronoi_cells = 0, refined_regions = 0, patches = 0;
+  double voronoi_seconds = 0, refine_seconds = 0, merge_seconds = 0;
+  // For `seeds_output_iterator`, written by the caller once nothing can throw.
+  std::vector<Index> seeds;
+};
+
+// The segmentation's values, read as the stages read them (counts checked
+// there, the threshold here), and the mesh's (forward_mesh_parameters()); `smooth_borders`
+// is always given (its default differs between uv_atlas() and
+// segment_into_disks()).
+template <typename NamedParameters>
+auto canonical_parameters(const NamedParameters& np, bool default_smooth_borders)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const std::size_t seeds = count_parameter(
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_seeds), default_number_of_seeds),
+    "number_of_seeds");
+  const std::size_t subsamples = count_parameter(
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_subsamples), default_number_of_subsamples),
+    "number_of_subsamples");
+  const bool smooth = static_cast<bool>(
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::smooth_borders), default_smooth_borders));
+  return forward_mesh_parameters(np, parameters::number_of_seeds(seeds)
+                                       .number_of_subsamples(subsamples)
+                                       .merge_threshold(merge_threshold_parameter(np))
+                                       .smooth_borders(smooth));
+}
+
+// The whole method on an indexed mesh; `labels` receives the patch ids and
+// `tree` (if not null) the merges. Reports the end of each step to
+// `progress` (which may cancel).
+// With `smooth`, the borders of the refined regions lose their saw teeth
+// (Border_smoother) before they are merged.
+template <typename NamedParameters, typename FaceHandles>
+Segmentation_steps segment_indexed(const Indexed_triangle_mesh& m, const FaceHandles& face_handles,
+                                   const NamedParameters& np, std::vector<Index>& labels, Merge_tree* tree,
+                                   bool smooth, Progress& progress)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+
+  const std::size_t k = checked_number_of_subsamples(count_parameter(
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_subsamples), default_number_of_subsamples),
+    "number_of_subsamples"));
+  const double threshold = merge_threshold_parameter(np);
+
+  Segmentation_steps steps;
+  CGAL::Real_timer timer;
+  timer.start();
+  Voronoi_fps fps(m);
+  progress("segmentation", 0, 3);
+  steps.seeds = voronoi_fps_labels(m, face_handles, fps, np, labels);
+  steps.voronoi_cells = steps.seeds.size();
+  steps.voronoi_seconds = timer.time();
+  progress("segmentation", 1, 3);
+  timer.reset();
+  steps.refined_regions = refine_regions(m, fps, group_faces_by_label(labels), k, labels);
+  if(smooth)
+  {
+    std::vector<Index> all(m.number_of_faces());
+    for(Index f = 0; f < all.size(); ++f)
+      all[f] = f;
+    Border_smoother(m).smooth(labels, all);
+  }
+  steps.refine_seconds = timer.time();
+  progress("segmentation", 2, 3);
+  timer.reset();
+  steps.patches = merge_regions(m, labels, steps.refined_regions, threshold, tree);
+  steps.merge_seconds = timer.time();
+  progress("segmentation", 3, 3);
+  return steps;
+}
+
+} // namespace internal
+} // namespace Disk_segmentation
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_DISK_SEGMENTATION_INTERNAL_SEGMENTATION_SEGMENTATION_PIPELINE_H
