@@ -76,10 +76,11 @@ int main(int argc, char** argv)
       return 1;
     }
 
-  // The three steps in one call, with the same parameters: same patches.
+  // The three steps in one call, with the same parameters and without the
+  // package's border smoothing (the paper's segmentation): same patches.
   Patch_map patch_in_one_call = get(CGAL::dynamic_face_property_t<std::size_t>(), mesh);
   const std::size_t count_in_one_call = DS::segment_into_disks(
-    mesh, patch_in_one_call, DS::parameters::number_of_seeds(8).number_of_subsamples(5));
+    mesh, patch_in_one_call, DS::parameters::number_of_seeds(8).number_of_subsamples(5).smooth_borders(false));
   for(face_descriptor f : faces(mesh))
     if(count_in_one_call != count || get(patch_in_one_call, f) != get(patch, f))
     {

@@ -292,8 +292,8 @@ TEST(Atlas, ChainsOfValuesGiveTheStagesOneParameterType)
   const auto a = DS::parameters::number_of_seeds(12).max_stretch(4.).texture_resolution(512u);
   const auto b = DS::parameters::padding_in_texels(3).merge_threshold(0.5f).number_of_seeds(std::size_t(7))
                    .smooth_borders(false).texels_per_unit(100.).max_number_of_charts(20u);
-  const auto stages_a = DS::internal::canonical_parameters(a, true);
-  const auto stages_b = DS::internal::canonical_parameters(b, true);
+  const auto stages_a = DS::internal::canonical_parameters(a);
+  const auto stages_b = DS::internal::canonical_parameters(b);
   static_assert(std::is_same<decltype(stages_a), decltype(stages_b)>::value, "a value changed the stages' type");
   // The values themselves are carried.
   using CGAL::parameters::get_parameter;
@@ -303,7 +303,7 @@ TEST(Atlas, ChainsOfValuesGiveTheStagesOneParameterType)
   EXPECT_DOUBLE_EQ(get_parameter(stages_b, DS::internal_np::merge_threshold), double(0.5f));
   // A map is kept, and changes the type (so it is read as given).
   const auto vpm = get(CGAL::vertex_point, m);
-  const auto with_map = DS::internal::canonical_parameters(a.vertex_point_map(vpm), true);
+  const auto with_map = DS::internal::canonical_parameters(a.vertex_point_map(vpm));
   static_assert(!std::is_same<decltype(stages_a), decltype(with_map)>::value, "the point map was dropped");
 }
 
@@ -553,7 +553,7 @@ TEST(Atlas, SmoothedBordersAreShorterWithFewerTeethAndStayDisks)
     Patch_map smooth = tm.add_property_map<Mesh::Face_index, std::size_t>("f:smooth", 0).first;
     // No merging: the refined regions themselves, with and without smoothing.
     const auto np = DS::parameters::number_of_seeds(30).merge_threshold(1e9);
-    const std::size_t rough_count = DS::segment_into_disks(tm, rough, np);
+    const std::size_t rough_count = DS::segment_into_disks(tm, rough, np.smooth_borders(false));
     const std::size_t smooth_count = DS::segment_into_disks(tm, smooth, np.smooth_borders(true));
     EXPECT_EQ(smooth_count, rough_count) << "smoothing moves faces, it neither adds nor removes regions";
     const TS::Partition_report partition = TS::check_disk_partition(tm, smooth);
@@ -958,10 +958,9 @@ TEST(Atlas, SplittingAChartGivesValidDiskPieces)
   std::vector<DS::internal::Chart> pieces;
   std::vector<DS::internal::Chart_outcome> outcomes;
   std::vector<std::uint64_t> rejected;
-  DS::internal::split_and_parameterize(m, splitter, all, DS::Parameterization_method::ARAP, true, pieces, outcomes,
-                                       DS::internal::Split_rule{ m, DS::Distortion_bound(),
-                                                                 DS::default_max_chart_faces, true },
-                                       rejected);
+  const DS::internal::Split_rule rule{ m, DS::Distortion_bound(), DS::default_max_chart_faces, true };
+  const DS::internal::Chart_choice<DS::internal::Split_rule> choice(m, DS::Parameterization_method::ARAP, true, rule);
+  DS::internal::split_and_parameterize(choice, splitter, all, pieces, outcomes, rejected);
   ASSERT_GE(pieces.size(), 2u);
   std::vector<int> covered(m.number_of_faces(), 0);
   for(std::size_t i = 0; i < pieces.size(); ++i)

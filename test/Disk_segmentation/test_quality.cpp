@@ -85,9 +85,9 @@ struct Atlas
       patch[f] = chart_of(std::size_t(f.idx()));
   }
 
-  DS::Atlas_quality quality() const { return DS::atlas_quality(mesh, uv, patch); }
+  DS::Atlas_quality quality() const { return DS::atlas_quality(mesh, patch, uv); }
   template <typename NamedParameters>
-  DS::Atlas_quality quality(const NamedParameters& np) const { return DS::atlas_quality(mesh, uv, patch, np); }
+  DS::Atlas_quality quality(const NamedParameters& np) const { return DS::atlas_quality(mesh, patch, uv, np); }
 };
 
 // Every distortion at its ideal value (0 for the differences, 1 for the

@@ -105,8 +105,14 @@ std::vector<std::size_t> segment_step_by_step(const TM& tm, std::size_t n = 10)
     << "merging must only unite regions";
 
   Patches<TM> at_once(tm);
-  EXPECT_EQ(DS::segment_into_disks(tm, at_once.map, DS::parameters::number_of_seeds(n)), merged);
+  // smooth_borders(false): the paper's segmentation, which the three steps are.
+  EXPECT_EQ(DS::segment_into_disks(tm, at_once.map, DS::parameters::number_of_seeds(n).smooth_borders(false)), merged);
   EXPECT_EQ(at_once.ids(tm), patches.ids(tm)) << "segment_into_disks must equal the three steps";
+  // Without the parameter, the borders are smoothed as everywhere else.
+  Patches<TM> by_default(tm), smoothed(tm);
+  DS::segment_into_disks(tm, by_default.map, DS::parameters::number_of_seeds(n));
+  DS::segment_into_disks(tm, smoothed.map, DS::parameters::number_of_seeds(n).smooth_borders(true));
+  EXPECT_EQ(by_default.ids(tm), smoothed.ids(tm));
   return patches.ids(tm);
 }
 

@@ -388,42 +388,40 @@ void catch_stop_signals()
 
 std::string stop_signal_name() { return stop_signal == SIGTERM ? "SIGTERM" : "SIGINT (Ctrl-C)"; }
 
-} // namespace
-
-int main(int argc, char** argv)
+// What the command line asks for.
+struct Command_line
 {
-  catch_stop_signals();
-  CLI::App app{"disk_uv: UV atlas of a triangle mesh through a segmentation into topological disks"};
   std::vector<std::string> inputs;
   std::string obj_path, glb_path, png_path, report_path, patch_ids_path, colored_path, material_ids_path;
   DS_IO::Atlas_options options;
-  std::string& method_name = options.method;
-  std::string& packer_name = options.packer;
-  double& padding = options.padding_in_texels;
-  double& texels_per_unit = options.texels_per_unit;
-  std::size_t& max_charts = options.max_number_of_charts;
-  DS::Distortion_bound& bound = options.bound;
   std::string resolution = std::to_string(DS::default_texture_resolution);
   bool no_fallback = false, quiet = false;
   DS_IO::Read_options read_options;
-  app.add_option("INPUT", inputs,
+};
+
+void add_options(CLI::App& app, Command_line& line)
+{
+  DS_IO::Atlas_options& options = line.options;
+  DS_IO::Read_options& read_options = line.read_options;
+  DS::Distortion_bound& bound = options.bound;
+  app.add_option("INPUT", line.inputs,
                  "input triangle mesh (.off .obj .ply .stl .ts); several: one atlas for all, each mesh "
                  "segmented alone")->required();
-  app.add_option("-o,--obj", obj_path, "write the atlas as OBJ (per-corner vt, one group per chart)")->check(non_empty_path);
-  app.add_option("--glb", glb_path, "write the atlas as binary glTF 2.0 (TEXCOORD_0)")->check(non_empty_path);
-  app.add_option("--atlas-png", png_path, "draw the atlas layout (flipped triangles in red)")->check(non_empty_path);
-  app.add_option("--report", report_path, "write all statistics as JSON")->check(non_empty_path);
-  app.add_option("--patch-ids", patch_ids_path, "write one chart id per face, in input face order")->check(non_empty_path);
-  app.add_option("--colored", colored_path, "write a PLY mesh with one color per chart")->check(non_empty_path);
-  app.add_option("--method", method_name, "parameterization: arap, conformal, lscm, mvc or tutte")
+  app.add_option("-o,--obj", line.obj_path, "write the atlas as OBJ (per-corner vt, one group per chart)")->check(non_empty_path);
+  app.add_option("--glb", line.glb_path, "write the atlas as binary glTF 2.0 (TEXCOORD_0)")->check(non_empty_path);
+  app.add_option("--atlas-png", line.png_path, "draw the atlas layout (flipped triangles in red)")->check(non_empty_path);
+  app.add_option("--report", line.report_path, "write all statistics as JSON")->check(non_empty_path);
+  app.add_option("--patch-ids", line.patch_ids_path, "write one chart id per face, in input face order")->check(non_empty_path);
+  app.add_option("--colored", line.colored_path, "write a PLY mesh with one color per chart")->check(non_empty_path);
+  app.add_option("--method", options.method, "parameterization: arap, conformal, lscm, mvc or tutte")
     ->capture_default_str();
-  app.add_option("--packer", packer_name, "packing: tight (one texel density) or grid (the paper's)")
+  app.add_option("--packer", options.packer, "packing: tight (one texel density) or grid (the paper's)")
     ->capture_default_str();
-  app.add_option("--resolution", resolution,
+  app.add_option("--resolution", line.resolution,
                  "target texture side in texels, or WIDTHxHEIGHT (e.g. 2048x1024) for a non-square one (tight packer)")
     ->capture_default_str()->check(texture_size);
-  app.add_option("--padding", padding, "gap around charts in texels")->capture_default_str();
-  app.add_option("--texels-per-unit", texels_per_unit,
+  app.add_option("--padding", options.padding_in_texels, "gap around charts in texels")->capture_default_str();
+  app.add_option("--texels-per-unit", options.texels_per_unit,
                  "fixed texel density (texels per unit of length, tight packer): the charts fill as many pages of "
                  "--resolution texels as they need, laid out as UDIM tiles (0: the largest density that fits one "
                  "page)")->capture_default_str();
@@ -451,7 +449,7 @@ int main(int argc, char** argv)
                "keep the saw teeth of chart borders (the paper's segmentation; smoothed and straightened by default)");
   app.add_option("--max-chart-faces", options.max_chart_faces,
                  "split larger patches before parameterizing them (bounds memory)")->capture_default_str()->check(non_negative_count);
-  app.add_option("--max-charts", max_charts,
+  app.add_option("--max-charts", options.max_number_of_charts,
                  "chart budget: merge charts past the distortion bound until there are at most this many "
                  "(0: no budget)")->capture_default_str()->check(non_negative_count);
   app.add_option("--threads", options.number_of_threads, "maximum number of threads (0: all)")->capture_default_str()->check(non_negative_count);
@@ -461,14 +459,248 @@ int main(int argc, char** argv)
   app.add_flag("--triangulate", read_options.triangulate,
                "triangulate faces with more than 3 vertices (a polygon split by the charts is then moved whole "
                "into one of them)");
-  app.add_option("--material-ids", material_ids_path,
+  app.add_option("--material-ids", line.material_ids_path,
                  "one integer per input face (after --triangulate), one per line: faces with different ids never "
                  "share a chart")->check(non_empty_path);
   app.add_flag("--allow-special-input", read_options.allow_special_input,
                "read INPUT even if it is not a regular file (a pipe, a device: read to its end, at most 4 GiB); "
                "without it such an input is refused");
-  app.add_flag("--no-fallback", no_fallback, "keep invalid charts (and report them) instead of redoing them");
-  app.add_flag("-q,--quiet", quiet, "no progress display and no summary");
+  app.add_flag("--no-fallback", line.no_fallback, "keep invalid charts (and report them) instead of redoing them");
+  app.add_flag("-q,--quiet", line.quiet, "no progress display and no summary");
+}
+
+// The outputs the command line names, checked before any work and written
+// together at the end (output_files.h), and the atlas they are written from.
+struct Atlas_outputs
+{
+  const Command_line& line;
+  unsigned int width, height;
+  disk_uv::Output_files files;
+  std::vector<disk_uv::Output_files::Writer> writers;
+  std::vector<std::string> page_pictures;
+  Mesh mesh;
+  Patch_map patch;
+  UV_map uv;
+  // What --report writes: one mesh's report, or the report of several.
+  const DS::Atlas_report* report = nullptr;
+  const DS_IO::Read_changes* changes = nullptr;
+  const nlohmann::json* several_report = nullptr;
+  double read_seconds = 0;
+
+  Atlas_outputs(const Command_line& command_line, unsigned int texture_width, unsigned int texture_height)
+    : line(command_line), width(texture_width), height(texture_height)
+  {
+    add("-o", line.obj_path, [this](std::ostream& o) { DS_IO::write_atlas_OBJ(o, mesh, patch, uv); });
+    add("--glb", line.glb_path, [this](std::ostream& o) { DS_IO::write_atlas_GLB(o, mesh, patch, uv); });
+    // With a fixed density the pages are known at the end: one picture each.
+    if(line.options.texels_per_unit == 0)
+      add("--atlas-png", line.png_path,
+          [this](std::ostream& o) { DS_IO::write_atlas_PNG(o, mesh, patch, uv, width, height); });
+    add("--patch-ids", line.patch_ids_path, [this](std::ostream& o) { write_patch_ids(o, mesh, patch); });
+    add("--colored", line.colored_path, [this](std::ostream& o) { write_colored_ply(o, mesh, patch); });
+    add("--report", line.report_path, [this](std::ostream& o) {
+      nlohmann::json json = several_report != nullptr
+                              ? *several_report
+                              : DS_IO::atlas_report_json(line.inputs.front(), mesh.number_of_vertices(), *report,
+                                                           line.options.method, line.options.packer, read_seconds,
+                                                           *changes);
+      // Several pages: the written UVs hold them as UDIM tiles.
+      json["packing"]["udim_tiles"] = json["packing"]["pages"].get<std::size_t>() > 1;
+      o << json.dump(2) << '\n';
+    });
+  }
+
+  void add(const char* option, const std::string& path, disk_uv::Output_files::Writer writer)
+  {
+    if(path.empty())
+      return;
+    files.add(option, path, line.inputs);
+    writers.push_back(std::move(writer));
+  }
+
+  // Several pages: the UVs written hold them as UDIM tiles, one picture each.
+  void add_pages(const DS::Packing_report& packing)
+  {
+    const std::size_t pages = packing.number_of_pages;
+    if(pages > 1)
+      DS_IO::move_pages_to_udim_tiles(mesh, patch, uv, packing.page_of_chart);
+    const std::string& png_path = line.png_path;
+    if(line.options.texels_per_unit == 0 || png_path.empty())
+      return;
+    struct stat status;
+    if(pages > 1 && ::stat(png_path.c_str(), &status) == 0 && !S_ISREG(status.st_mode))
+      throw disk_uv::Tool_error("--atlas-png: the " + std::to_string(pages) + " pages need a picture each, named " +
+                                "after a regular file's name (atlas.png: atlas.1001.png, ...); '" + png_path +
+                                "' is not a regular file");
+    for(std::size_t page = 0; page < pages; ++page)
+    {
+      const unsigned int tile = DS_IO::udim_tile(page);
+      page_pictures.push_back(pages == 1 ? png_path : page_file_name(png_path, tile));
+      add("--atlas-png", page_pictures.back(), [this, tile](std::ostream& o) {
+        DS_IO::write_atlas_PNG(o, mesh, patch, uv, width, height, tile);
+      });
+    }
+  }
+
+  void write_all() { files.write_all(writers); }
+};
+
+typedef std::function<bool(const std::string&, std::size_t, std::size_t)> Progress_callback;
+
+// One atlas for several meshes, each segmented alone.
+template <typename Settings>
+int run_several(const Command_line& line, const Settings& settings, const Progress_callback& keep_going,
+                Progress_display& display, Atlas_outputs& out)
+{
+  if(!line.material_ids_path.empty())
+    throw disk_uv::Tool_error("--material-ids takes one INPUT, not " + std::to_string(line.inputs.size()));
+  const Several_atlas several = atlas_of_several(line.inputs, line.read_options, settings.progress_callback(keep_going));
+  display.finish();
+  if(stop_signal != 0)
+    throw DS::Cancelled("packing");
+  combine(several, out.mesh, out.patch, out.uv);
+  out.add_pages(several.report.packing);
+  const nlohmann::json json = several_report_json(several, line.options.method, line.options.packer);
+  out.several_report = &json;
+  out.write_all();
+  if(!line.quiet)
+    print_several_summary(several);
+  print_pages(several.report.packing, out.page_pictures, line.quiet);
+  warn_if_sparse(several.report.packing, several.report.first_chart.back(), line.resolution,
+                 line.options.padding_in_texels, line.options.texels_per_unit);
+  return several_charts_are_valid(several) ? 0 : 1;
+}
+
+// Reads the one INPUT into `out.mesh`, with the maps uv_atlas() reads
+// (each face its own polygon and one material unless the input says
+// otherwise: both maps always given, one instantiation of uv_atlas()).
+template <typename PolygonMap, typename MaterialMap>
+DS_IO::Read_changes read_input(const Command_line& line, Atlas_outputs& out, PolygonMap& polygon, MaterialMap& material)
+{
+  Mesh& mesh = out.mesh;
+  CGAL::Real_timer timer;
+  timer.start();
+  const DS_IO::Read_changes changes = DS_IO::read_triangle_mesh(line.inputs.front(), mesh, line.read_options);
+  out.read_seconds = timer.time();
+  out.patch = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:patch", 0).first;
+  out.uv = mesh.add_property_map<Mesh::Halfedge_index, Kernel::Point_2>("h:uv", Kernel::Point_2(0, 0)).first;
+  polygon = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:polygon", 0).first;
+  material = mesh.add_property_map<Mesh::Face_index, std::int64_t>("f:material", 0).first;
+  for(Mesh::Face_index f : mesh.faces())
+    polygon[f] = changes.polygon_of_face.empty() ? std::size_t(f) : changes.polygon_of_face[std::size_t(f)];
+  if(!line.material_ids_path.empty())
+  {
+    const std::vector<std::int64_t> ids =
+      read_material_ids(line.material_ids_path, mesh.number_of_faces(), line.read_options.allow_special_input);
+    for(Mesh::Face_index f : mesh.faces())
+      material[f] = ids[std::size_t(f)];
+  }
+  return changes;
+}
+
+void print_summary(const Command_line& line, const DS::Atlas_report& report, const DS_IO::Read_changes& changes,
+                   double read_seconds)
+{
+  const char* input = line.inputs.front().c_str();
+  if(line.quiet)
+    return;
+  if(changes.polygons_triangulated || changes.faces_removed || changes.vertices_added || changes.vertices_removed ||
+     changes.pinched_vertices_split)
+    std::printf("%s: input changed: %zu polygons triangulated (%zu as fans), %zu faces removed, "
+                "%zu vertices removed, %zu vertices added, %zu pinched vertices split\n",
+                input, changes.polygons_triangulated, changes.fan_triangulations, changes.faces_removed,
+                changes.vertices_removed, changes.vertices_added, changes.pinched_vertices_split);
+  std::printf("%s: %zu faces -> %zu charts (voronoi %zu, refined %zu), %s, %zu fallbacks, %zu invalid, "
+              "packing %.1f%%; time read %.3f s, segment %.3f s, parameterize %.3f s, pack %.3f s\n",
+              input, report.number_of_faces, report.number_of_charts, report.number_of_voronoi_cells,
+              report.number_of_refined_regions, line.options.method.c_str(),
+              report.parameterization.number_of_fallbacks, report.parameterization.number_of_invalid_charts,
+              100 * report.packing.efficiency, read_seconds,
+              report.voronoi_seconds + report.refine_seconds + report.merge_seconds,
+              report.parameterization_seconds, report.packing_seconds);
+  if(report.polygons_moved_whole + report.polygons_left_across_charts > 0)
+    std::printf("%s: %zu polygons split by the charts moved whole into one of them, %zu left across charts\n",
+                input, report.polygons_moved_whole, report.polygons_left_across_charts);
+}
+
+// The atlas of the one INPUT.
+template <typename Settings>
+int run_single(const Command_line& line, const Settings& settings, const Progress_callback& keep_going,
+               Progress_display& display, Atlas_outputs& out)
+{
+  Mesh::Property_map<Mesh::Face_index, std::size_t> polygon;
+  Mesh::Property_map<Mesh::Face_index, std::int64_t> material;
+  const DS_IO::Read_changes changes = read_input(line, out, polygon, material);
+  const DS::Atlas_report report = DS::uv_atlas(
+    out.mesh, out.uv,
+    settings.face_patch_map(out.patch).face_polygon_map(polygon).face_material_map(material)
+      .progress_callback(keep_going));
+  display.finish();
+  // From here the writing's own handler (output_files.h) takes over: a
+  // signal removes the temporaries and ends the run.
+  if(stop_signal != 0)
+    throw DS::Cancelled("packing");
+
+  out.report = &report;
+  out.changes = &changes;
+  out.add_pages(report.packing);
+  out.write_all();
+
+  print_summary(line, report, changes, out.read_seconds);
+  print_pages(report.packing, out.page_pictures, line.quiet);
+  const std::size_t max_charts = line.options.max_number_of_charts;
+  warn_if_sparse(report.packing, report.number_of_charts, line.resolution, line.options.padding_in_texels,
+                 line.options.texels_per_unit);
+  if(!report.parameterization.chart_budget_met)
+    std::cerr << "disk_uv: warning: " << report.number_of_charts << " charts, over --max-charts (" << max_charts
+              << "): no two adjacent charts unite into one disk with a valid map" << std::endl;
+  else if(!line.quiet && report.parameterization.charts_before_budget > 0)
+    std::printf("%s: %zu charts met the distortion bound; merged past it to --max-charts (%zu)\n",
+                line.inputs.front().c_str(), report.parameterization.charts_before_budget, max_charts);
+  // With the fallback off, invalid charts are a failure the caller must see.
+  if(report.parameterization.number_of_invalid_charts > 0)
+  {
+    std::cerr << "disk_uv: error: " << report.parameterization.number_of_invalid_charts
+              << " charts have invalid UVs (run without --no-fallback to repair them)" << std::endl;
+    return 1;
+  }
+  return 0;
+}
+
+int run(Command_line& line, Progress_display& display)
+{
+  DS_IO::Atlas_options& options = line.options;
+  DS_IO::parse_texture_size(line.resolution, options.texture_width, options.texture_height);
+  const unsigned int width = options.texture_width, height = options.texture_height;
+  for(unsigned int side : { width, height })
+    if(!line.png_path.empty() && (side == 0 || side > DS_IO::max_atlas_png_resolution))
+      throw disk_uv::Tool_error("--atlas-png needs --resolution between 1 and " +
+                                std::to_string(DS_IO::max_atlas_png_resolution) + ", not " + std::to_string(side));
+  Atlas_outputs out(line, width, height);
+
+  // Before the library's own check, to name the user's --resolution; an unknown packer is named first.
+  if(width != height && DS_IO::packing_method_from_string(options.packer) != DS::Packing_method::TIGHT)
+    throw disk_uv::Tool_error("--resolution " + line.resolution + " is not square: the grid packer's cells are square "
+                              "(use --packer tight)");
+
+  options.use_fallback = !line.no_fallback;
+  const auto settings = DS_IO::atlas_parameters(options);
+  const Progress_callback keep_going([&display](const std::string& s, std::size_t d, std::size_t t) {
+    display(s, d, t);
+    return stop_signal == 0;
+  });
+  return line.inputs.size() > 1 ? run_several(line, settings, keep_going, display, out)
+                                 : run_single(line, settings, keep_going, display, out);
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  catch_stop_signals();
+  CLI::App app{"disk_uv: UV atlas of a triangle mesh through a segmentation into topological disks"};
+  Command_line line;
+  add_options(app, line);
   try
   {
     app.parse(argc, argv);
@@ -478,175 +710,10 @@ int main(int argc, char** argv)
     return app.exit(e) == 0 ? 0 : 2;
   }
 
-  Progress_display display(!quiet && ::isatty(2));
-  const std::string& input = inputs.front();
+  Progress_display display(!line.quiet && ::isatty(2));
   try
   {
-    DS_IO::parse_texture_size(resolution, options.texture_width, options.texture_height);
-    const unsigned int width = options.texture_width, height = options.texture_height;
-    for(unsigned int side : { width, height })
-      if(!png_path.empty() && (side == 0 || side > CGAL::Disk_segmentation::IO::max_atlas_png_resolution))
-        throw disk_uv::Tool_error("--atlas-png needs --resolution between 1 and " +
-                                  std::to_string(CGAL::Disk_segmentation::IO::max_atlas_png_resolution) + ", not " +
-                                  std::to_string(side));
-    // Every output is checked before any work, written at the end.
-    disk_uv::Output_files outputs;
-    std::vector<disk_uv::Output_files::Writer> writers;
-    const DS::Atlas_report* report_ptr = nullptr;
-    const DS_IO::Read_changes* changes_ptr = nullptr;
-    const nlohmann::json* several_report = nullptr;
-    double read_seconds = 0;
-    Mesh mesh;
-    Patch_map patch;
-    UV_map uv;
-    auto add_output = [&](const char* option, const std::string& path, disk_uv::Output_files::Writer writer) {
-      if(path.empty())
-        return;
-      outputs.add(option, path, inputs);
-      writers.push_back(std::move(writer));
-    };
-    add_output("-o", obj_path, [&](std::ostream& o) { CGAL::Disk_segmentation::IO::write_atlas_OBJ(o, mesh, patch, uv); });
-    add_output("--glb", glb_path, [&](std::ostream& o) { CGAL::Disk_segmentation::IO::write_atlas_GLB(o, mesh, patch, uv); });
-    // With a fixed density the pages are known at the end: one picture each.
-    if(texels_per_unit == 0)
-      add_output("--atlas-png", png_path,
-                 [&](std::ostream& o) { CGAL::Disk_segmentation::IO::write_atlas_PNG(o, mesh, patch, uv, width, height); });
-    std::vector<std::string> page_pictures;
-    // Several pages: the UVs written hold them as UDIM tiles, one picture each.
-    auto add_page_outputs = [&](const DS::Packing_report& packing) {
-      const std::size_t pages = packing.number_of_pages;
-      if(pages > 1)
-        CGAL::Disk_segmentation::IO::move_pages_to_udim_tiles(mesh, patch, uv, packing.page_of_chart);
-      if(texels_per_unit == 0 || png_path.empty())
-        return;
-      struct stat status;
-      if(pages > 1 && ::stat(png_path.c_str(), &status) == 0 && !S_ISREG(status.st_mode))
-        throw disk_uv::Tool_error("--atlas-png: the " + std::to_string(pages) + " pages need a picture each, named " +
-                                  "after a regular file's name (atlas.png: atlas.1001.png, ...); '" + png_path +
-                                  "' is not a regular file");
-      for(std::size_t page = 0; page < pages; ++page)
-      {
-        const unsigned int tile = CGAL::Disk_segmentation::IO::udim_tile(page);
-        page_pictures.push_back(pages == 1 ? png_path : page_file_name(png_path, tile));
-        add_output("--atlas-png", page_pictures.back(), [&, tile](std::ostream& o) {
-          CGAL::Disk_segmentation::IO::write_atlas_PNG(o, mesh, patch, uv, width, height, tile);
-        });
-      }
-    };
-    add_output("--patch-ids", patch_ids_path, [&](std::ostream& o) { write_patch_ids(o, mesh, patch); });
-    add_output("--colored", colored_path, [&](std::ostream& o) { write_colored_ply(o, mesh, patch); });
-    add_output("--report", report_path, [&](std::ostream& o) {
-      nlohmann::json json = several_report != nullptr
-                              ? *several_report
-                              : DS_IO::atlas_report_json(input, mesh.number_of_vertices(), *report_ptr,
-                                                           method_name, packer_name, read_seconds, *changes_ptr);
-      // Several pages: the written UVs hold them as UDIM tiles.
-      json["packing"]["udim_tiles"] = json["packing"]["pages"].get<std::size_t>() > 1;
-      o << json.dump(2) << '\n';
-    });
-
-    // Before the library's own check, to name the user's --resolution; an unknown packer is named first.
-    if(width != height && DS_IO::packing_method_from_string(packer_name) != DS::Packing_method::TIGHT)
-      throw disk_uv::Tool_error("--resolution " + resolution + " is not square: the grid packer's cells are square "
-                                "(use --packer tight)");
-
-    options.use_fallback = !no_fallback;
-    const auto settings = DS_IO::atlas_parameters(options);
-    const auto keep_going = std::function<bool(const std::string&, std::size_t, std::size_t)>(
-      [&display](const std::string& s, std::size_t d, std::size_t t) {
-        display(s, d, t);
-        return stop_signal == 0;
-      });
-
-    if(inputs.size() > 1)
-    {
-      if(!material_ids_path.empty())
-        throw disk_uv::Tool_error("--material-ids takes one INPUT, not " + std::to_string(inputs.size()));
-      const Several_atlas several = atlas_of_several(inputs, read_options, settings.progress_callback(keep_going));
-      display.finish();
-      if(stop_signal != 0)
-        throw DS::Cancelled("packing");
-      combine(several, mesh, patch, uv);
-      add_page_outputs(several.report.packing);
-      const nlohmann::json json = several_report_json(several, method_name, packer_name);
-      several_report = &json;
-      outputs.write_all(writers);
-      if(!quiet)
-        print_several_summary(several);
-      print_pages(several.report.packing, page_pictures, quiet);
-      warn_if_sparse(several.report.packing, several.report.first_chart.back(), resolution, padding,
-                     texels_per_unit);
-      return several_charts_are_valid(several) ? 0 : 1;
-    }
-
-    CGAL::Real_timer timer;
-    timer.start();
-    const DS_IO::Read_changes changes = DS_IO::read_triangle_mesh(input, mesh, read_options);
-    read_seconds = timer.time();
-    patch = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:patch", 0).first;
-    uv = mesh.add_property_map<Mesh::Halfedge_index, Kernel::Point_2>("h:uv", Kernel::Point_2(0, 0)).first;
-    // Both maps are always given (each face its own polygon, one material):
-    // one instantiation of uv_atlas().
-    auto polygon = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:polygon", 0).first;
-    auto material = mesh.add_property_map<Mesh::Face_index, std::int64_t>("f:material", 0).first;
-    for(Mesh::Face_index f : mesh.faces())
-      polygon[f] = changes.polygon_of_face.empty() ? std::size_t(f) : changes.polygon_of_face[std::size_t(f)];
-    if(!material_ids_path.empty())
-    {
-      const std::vector<std::int64_t> ids =
-        read_material_ids(material_ids_path, mesh.number_of_faces(), read_options.allow_special_input);
-      for(Mesh::Face_index f : mesh.faces())
-        material[f] = ids[std::size_t(f)];
-    }
-
-    const DS::Atlas_report report = DS::uv_atlas(
-      mesh, uv,
-      settings.face_patch_map(patch).face_polygon_map(polygon).face_material_map(material)
-        .progress_callback(keep_going));
-    display.finish();
-    // From here the writing's own handler (output_files.h) takes over: a
-    // signal removes the temporaries and ends the run.
-    if(stop_signal != 0)
-      throw DS::Cancelled("packing");
-
-    report_ptr = &report;
-    changes_ptr = &changes;
-    add_page_outputs(report.packing);
-    outputs.write_all(writers);
-
-    if(!quiet && (changes.polygons_triangulated || changes.faces_removed || changes.vertices_added ||
-                  changes.vertices_removed || changes.pinched_vertices_split))
-      std::printf("%s: input changed: %zu polygons triangulated (%zu as fans), %zu faces removed, "
-                  "%zu vertices removed, %zu vertices added, %zu pinched vertices split\n",
-                  input.c_str(), changes.polygons_triangulated, changes.fan_triangulations, changes.faces_removed,
-                  changes.vertices_removed, changes.vertices_added, changes.pinched_vertices_split);
-    if(!quiet)
-      std::printf("%s: %zu faces -> %zu charts (voronoi %zu, refined %zu), %s, %zu fallbacks, %zu invalid, "
-                  "packing %.1f%%; time read %.3f s, segment %.3f s, parameterize %.3f s, pack %.3f s\n",
-                  input.c_str(), report.number_of_faces, report.number_of_charts, report.number_of_voronoi_cells,
-                  report.number_of_refined_regions, method_name.c_str(),
-                  report.parameterization.number_of_fallbacks, report.parameterization.number_of_invalid_charts,
-                  100 * report.packing.efficiency, read_seconds,
-                  report.voronoi_seconds + report.refine_seconds + report.merge_seconds,
-                  report.parameterization_seconds, report.packing_seconds);
-    if(!quiet && report.polygons_moved_whole + report.polygons_left_across_charts > 0)
-      std::printf("%s: %zu polygons split by the charts moved whole into one of them, %zu left across charts\n",
-                  input.c_str(), report.polygons_moved_whole, report.polygons_left_across_charts);
-    print_pages(report.packing, page_pictures, quiet);
-    warn_if_sparse(report.packing, report.number_of_charts, resolution, padding, texels_per_unit);
-    if(!report.parameterization.chart_budget_met)
-      std::cerr << "disk_uv: warning: " << report.number_of_charts << " charts, over --max-charts (" << max_charts
-                << "): no two adjacent charts unite into one disk with a valid map" << std::endl;
-    else if(!quiet && report.parameterization.charts_before_budget > 0)
-      std::printf("%s: %zu charts met the distortion bound; merged past it to --max-charts (%zu)\n", input.c_str(),
-                  report.parameterization.charts_before_budget, max_charts);
-    // With the fallback off, invalid charts are a failure the caller must see.
-    if(report.parameterization.number_of_invalid_charts > 0)
-    {
-      std::cerr << "disk_uv: error: " << report.parameterization.number_of_invalid_charts
-                << " charts have invalid UVs (run without --no-fallback to repair them)" << std::endl;
-      return 1;
-    }
+    return run(line, display);
   }
   catch(const DS::Cancelled& e)
   {
@@ -668,5 +735,4 @@ int main(int argc, char** argv)
     std::cerr << "disk_uv: error: " << e.what() << std::endl;
     return 1;
   }
-  return 0;
 }

@@ -12,9 +12,22 @@ namespace CGAL {
 namespace Disk_segmentation {
 
 /// \ingroup PkgDiskSegmentationRef
-/// The per-chart parameterization methods, all from CGAL's
-/// Surface_mesh_parameterization package. The paper's three methods map as:
-/// harmonic = `DISCRETE_CONFORMAL`, conformal = `LSCM`, ARAP = `ARAP`.
+/// The per-chart parameterization methods. The paper's three methods map
+/// as: harmonic = `DISCRETE_CONFORMAL`, conformal = `LSCM`, ARAP = `ARAP`.
+///
+/// Whose code runs: `DISCRETE_CONFORMAL`, `LSCM`, `MEAN_VALUE` and `TUTTE`
+/// are CGAL's Surface_mesh_parameterization parameterizers
+/// (`Discrete_conformal_map_parameterizer_3`, `LSCM_parameterizer_3`,
+/// `Mean_value_coordinates_parameterizer_3`,
+/// `Barycentric_mapping_parameterizer_3`, the fixed-border ones with
+/// `Circular_border_arc_length_parameterizer_3`), run on a copy of the
+/// chart; the package gives the fixed-border ones a sparse LU factored once.
+/// `ARAP` is the package's own: its start is its own free-border LSCM
+/// (assembled directly, not SMP's), its iterations its own local/global
+/// solver with one factorization (SMP's `ARAP_parameterizer_3` rebuilds and
+/// refactors its system at every iteration); SMP's LSCM, mean value
+/// and Tutte maps are only its fallback starts. Every method lays out a
+/// chart of one triangle isometrically, without a solver.
 enum class Parameterization_method
 {
   /// Discrete conformal map (cotangent weights), border fixed on a circle by arc length.

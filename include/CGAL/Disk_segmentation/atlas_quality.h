@@ -8,22 +8,19 @@
 
 #include <CGAL/Disk_segmentation/Distortion_statistics.h>
 #include <CGAL/Disk_segmentation/Input_error.h>
+#include <CGAL/Disk_segmentation/default_values.h>
 #include <CGAL/Disk_segmentation/internal/Atlas/Atlas_measures.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Face_partition.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Indexed_triangle_mesh.h>
-#include <CGAL/Disk_segmentation/internal/Parameterization/Triangle_distortion.h>
 #include <CGAL/Disk_segmentation/internal/Parameters/Parameter_checks.h>
 #include <CGAL/Disk_segmentation/parameters.h>
-
-#include <CGAL/boost/graph/iterator.h>
 
 #include <boost/graph/graph_traits.hpp>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
+#include <cstddef>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -113,10 +110,10 @@ struct Atlas_quality
 /// the definitions.
 ///
 /// @tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph` whose faces are triangles
-/// @tparam UVMap a model of `ReadablePropertyMap` with `halfedge_descriptor` as key type and a 2D
-///         point type as value type (per-corner UVs, see `parameterize_patches()`)
 /// @tparam FacePatchMap a model of `ReadablePropertyMap` with `face_descriptor` as key type and an
 ///         integral value type (chart ids)
+/// @tparam UVMap a model of `ReadablePropertyMap` with `halfedge_descriptor` as key type and a 2D
+///         point type as value type (per-corner UVs, see `parameterize_patches()`)
 /// @tparam NamedParameters a sequence of \ref PkgDiskSegmentationNamedParameters "Named Parameters"
 ///
 /// \cgalNamedParamsBegin
@@ -138,17 +135,15 @@ struct Atlas_quality
 /// and the texels covered by the UV triangles for the overlap count; memory
 /// \f$ O(F + V + r^2) \f$ (one byte per texel). UVs and coordinates are
 /// converted to `double` whatever the kernel.
-template <typename TriangleMesh, typename UVMap, typename FacePatchMap,
+template <typename TriangleMesh, typename FacePatchMap, typename UVMap,
           typename NamedParameters = parameters::Default_named_parameters>
-Atlas_quality atlas_quality(const TriangleMesh& tm, UVMap uv_map, FacePatchMap face_patch_map,
+Atlas_quality atlas_quality(const TriangleMesh& tm, FacePatchMap face_patch_map, UVMap uv_map,
                             const NamedParameters& np = parameters::default_values())
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   typedef boost::graph_traits<TriangleMesh> GT;
-  typedef typename GT::halfedge_descriptor halfedge_descriptor;
   using internal::Index;
-  using internal::no_index;
 
   static_assert(internal::Check_patch_map<FacePatchMap>::value, "");
   static_assert(internal::Check_named_parameters<NamedParameters>::value, "");
@@ -167,170 +162,37 @@ Atlas_quality atlas_quality(const TriangleMesh& tm, UVMap uv_map, FacePatchMap f
   const std::size_t F = m.number_of_faces();
   q.number_of_faces = F;
 
-  // UVs in the indexed mesh's corner order.
-  std::vector<std::array<std::array<double, 2>, 3> > uv(F);
-  // Three halfedges: build_indexed_triangle_mesh checked the triangles.
-  for(Index f = 0; f < F; ++f)
-    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(face_handles[f], tm), tm))
-      for(int j = 0; j < 3; ++j)
-        if(vertex_handles[m.corners[f][j]] == target(h, tm))
-        {
-          const auto p = get(uv_map, h);
-          uv[f][j] = {{ CGAL::to_double(p.x()), CGAL::to_double(p.y()) }};
-          if(!std::isfinite(uv[f][j][0]) || !std::isfinite(uv[f][j][1]))
-          {
-            q.failed = true;
-            q.failure_reason = "non-finite UV at face #" + std::to_string(m.input_position(f));
-            return q;
-          }
-        }
+  internal::Corner_uvs uv;
+  const Index non_finite = internal::read_corner_uvs(tm, uv_map, m, face_handles, vertex_handles, uv);
+  if(non_finite != internal::no_index)
+  {
+    q.failed = true;
+    q.failure_reason = "non-finite UV at face #" + std::to_string(m.input_position(non_finite));
+    return q;
+  }
 
-  // Charts: ids, sizes, 3D and UV areas. The indexed mesh is normalized by
-  // a power of two (see normalize_coordinates); only the seam length is
-  // reported in the input's units, every other measure is scale free.
+  // The indexed mesh is normalized by a power of two (see
+  // normalize_coordinates); only the seam length is reported in the
+  // input's units, every other measure is scale free.
   const std::vector<std::size_t> ids = internal::read_face_labels(face_handles, face_patch_map);
   const std::size_t charts = ids.empty() ? 0 : *std::max_element(ids.begin(), ids.end()) + 1;
-  std::vector<std::size_t> chart_faces(charts, 0);
-  std::vector<double> chart_area_3d(charts, 0), chart_area_uv(charts, 0);
-  std::vector<internal::Triangle_jacobian> jacobians(F);
-  double total_3d = 0, total_uv = 0, mean_abs_det = 0;
-  std::size_t measured = 0;
-  for(Index f = 0; f < F; ++f)
-  {
-    jacobians[f] = internal::triangle_jacobian(m.point(f, 0), m.point(f, 1), m.point(f, 2),
-                                               uv[f][0], uv[f][1], uv[f][2]);
-    internal::Triangle_jacobian& j = jacobians[f];
-    // Each component has its own frame: measures that compare faces across
-    // charts need the common one (a component too small to register in it
-    // gets zero 3D area, as it would at one shared scale).
-    const double unit = m.common_unit(f);
-    if(unit != 1.)
-    {
-      j.area_3d *= unit * unit;
-      j.determinant /= unit * unit;
-      j.sigma_max /= unit;
-      j.sigma_min /= unit;
-    }
-    ++chart_faces[ids[f]];
-    chart_area_3d[ids[f]] += j.area_3d;
-    // Unsigned: a flipped face still covers its UV area.
-    const double a_uv = 0.5 * std::abs((uv[f][1][0] - uv[f][0][0]) * (uv[f][2][1] - uv[f][0][1]) -
-                                       (uv[f][1][1] - uv[f][0][1]) * (uv[f][2][0] - uv[f][0][0]));
-    chart_area_uv[ids[f]] += a_uv;
-    total_uv += a_uv;
-    total_3d += j.area_3d;
-    if(j.valid())
-    {
-      mean_abs_det += std::abs(j.determinant);
-      ++measured;
-    }
-  }
-  q.packing_efficiency = total_uv;
+  const internal::Face_measures measures = internal::measure_faces(m, uv, ids, charts);
+  q.packing_efficiency = measures.total_uv;
   q.number_of_charts = 0;
   q.smallest_chart_faces = F;
   for(std::size_t c = 0; c < charts; ++c)
   {
-    if(chart_faces[c] == 0)
+    const std::size_t faces = measures.chart_faces[c];
+    if(faces == 0)
       continue;
     ++q.number_of_charts;
-    q.smallest_chart_faces = (std::min)(q.smallest_chart_faces, chart_faces[c]);
-    q.single_face_charts += (chart_faces[c] == 1) ? 1 : 0;
+    q.smallest_chart_faces = (std::min)(q.smallest_chart_faces, faces);
+    q.single_face_charts += (faces == 1) ? 1 : 0;
   }
-  if(measured > 0)
-    mean_abs_det /= double(measured);
+  internal::measure_distortion(measures, ids, q);
 
-  // Per-face distortion; s1 s2 is rescaled by the chart's (or the atlas's)
-  // 3D-to-UV area ratio so that the normalized map preserves area overall.
-  std::vector<std::pair<double, double> > angle, area, atlas_area;
-  std::vector<double> ratios;
-  double weight = 0, ratio = 0, dirichlet = 0;
-  double b_area = 0, b_angle = 0, b_dirichlet = 0, b_atlas_area = 0, b_atlas_dirichlet = 0;
-  const double atlas_normalization = (total_uv > 0) ? total_3d / total_uv : 1.;
-  for(Index f = 0; f < F; ++f)
-  {
-    const internal::Triangle_jacobian& j = jacobians[f];
-    if(!(j.area_3d > 0))
-    {
-      ++q.zero_area_faces;
-      continue;
-    }
-    if(j.determinant < 0 && std::abs(j.determinant) > 1e-12 * mean_abs_det)
-    {
-      ++q.flipped_faces;
-      continue;
-    }
-    if(!(std::abs(j.determinant) > 1e-12 * mean_abs_det))
-    {
-      ++q.degenerate_faces;
-      continue;
-    }
-    const std::size_t c = ids[f];
-    const double chart_normalization = chart_area_uv[c] > 0 ? chart_area_3d[c] / chart_area_uv[c] : 1.;
-    const double s1 = j.sigma_max, s2 = j.sigma_min, w = j.area_3d;
-    // Scaling UVs by k multiplies both singular values by k; areas by k^2.
-    const double chart_k = std::sqrt(chart_normalization), atlas_k = std::sqrt(atlas_normalization);
-    const double c1 = s1 * chart_k, c2 = s2 * chart_k, a1 = s1 * atlas_k, a2 = s2 * atlas_k;
-    angle.emplace_back(std::abs(std::log(s1 / s2)), w);
-    area.emplace_back(std::abs(std::log(c1 * c2)), w);
-    atlas_area.emplace_back(std::abs(std::log(a1 * a2)), w);
-    ratio += w * s1 / s2;
-    ratios.push_back(s1 / s2);
-    q.min_area_scale = ratios.size() == 1 ? c1 * c2 : (std::min)(q.min_area_scale, c1 * c2);
-    q.max_area_scale = ratios.size() == 1 ? c1 * c2 : (std::max)(q.max_area_scale, c1 * c2);
-    dirichlet += w * (c1 * c1 + c2 * c2 + 1 / (c1 * c1) + 1 / (c2 * c2)) / 4;
-    b_area += w * (c1 * c2 + 1 / (c1 * c2) - 2);
-    b_angle += w * (s1 / s2 + s2 / s1 - 2);
-    b_dirichlet += w * (c1 * c1 + c2 * c2 + 1 / (c1 * c1) + 1 / (c2 * c2)) / 2;
-    b_atlas_area += w * (a1 * a2 + 1 / (a1 * a2) - 2);
-    b_atlas_dirichlet += w * (a1 * a1 + a2 * a2 + 1 / (a1 * a1) + 1 / (a2 * a2)) / 2;
-    weight += w;
-  }
-  q.flipped_percent = F > 0 ? 100. * double(q.flipped_faces) / double(F) : 0.;
-  q.degenerate_percent = F > 0 ? 100. * double(q.degenerate_faces) / double(F) : 0.;
-  if(!ratios.empty())
-  {
-    // The nearest-rank percentile: the value below which 95% of the triangles lie.
-    const std::size_t rank = (std::min)(ratios.size() - 1,
-                                        static_cast<std::size_t>(std::ceil(0.95 * double(ratios.size()))) - 1);
-    std::nth_element(ratios.begin(), ratios.begin() + rank, ratios.end());
-    q.conformal_ratio_p95 = ratios[rank];
-    q.max_conformal_ratio = *std::max_element(ratios.begin(), ratios.end());
-  }
-  q.angle_distortion = internal::distortion_statistics(std::move(angle));
-  q.area_distortion = internal::distortion_statistics(std::move(area));
-  q.atlas_area_distortion = internal::distortion_statistics(std::move(atlas_area));
-  if(weight > 0)
-  {
-    q.conformal_ratio = ratio / weight;
-    q.symmetric_dirichlet = dirichlet / weight;
-    q.benchmark_area_distortion = b_area / weight;
-    q.benchmark_angle_distortion = b_angle / weight;
-    q.benchmark_symmetric_dirichlet = b_dirichlet / weight;
-    q.benchmark_atlas_area_distortion = b_atlas_area / weight;
-    q.benchmark_atlas_symmetric_dirichlet = b_atlas_dirichlet / weight;
-  }
-
-  // Seams: each interior edge once, from its face of smaller index; the
-  // neighbor's corners are matched by vertex index.
-  double seam = 0;
-  for(Index f = 0; f < F; ++f)
-    for(int i = 0; i < 3; ++i)
-    {
-      const Index g = m.neighbors[f][i];
-      if(g == no_index || g < f)
-        continue;
-      bool agree = true;
-      for(int e = 0; e < 2 && agree; ++e)
-      {
-        const Index v = m.corners[f][(i + e) % 3];
-        for(int k = 0; k < 3; ++k)
-          if(m.corners[g][k] == v)
-            agree = (uv[g][k] == uv[f][(i + e) % 3]);
-      }
-      if(!agree)
-        seam += m.edge_length(f, i) * m.common_unit(f);
-    }
-  q.cut_length = total_3d > 0 ? seam / std::sqrt(total_3d) : 0.;
+  const double seam = internal::seam_length(m, uv);
+  q.cut_length = measures.total_3d > 0 ? seam / std::sqrt(measures.total_3d) : 0.;
   q.seam_length = seam / m.normalization_scale;  // back to the input's units
 
   if(resolution > 0)

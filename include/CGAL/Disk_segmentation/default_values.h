@@ -31,6 +31,12 @@ constexpr std::size_t default_number_of_subsamples = 5;
 constexpr int default_merge_threshold_sides = 5;
 
 /// \ingroup PkgDiskSegmentationRef
+/// Whether region borders lose their saw teeth (`smooth_borders`) when the
+/// parameter is not given, in every function that reads it: not in the
+/// paper, whose segmentation `smooth_borders(false)` gives.
+constexpr bool default_smooth_borders = true;
+
+/// \ingroup PkgDiskSegmentationRef
 /// The `texture_resolution` (texels on a side) of the packers and of the
 /// quality measures when none is given.
 constexpr unsigned int default_texture_resolution = 1024;

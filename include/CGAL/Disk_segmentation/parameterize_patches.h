@@ -108,7 +108,7 @@ namespace Disk_segmentation {
 ///     \cgalParamDescription{whether the borders between the pieces of a split patch lose their saw
 ///       teeth (see `segment_into_disks()`)}
 ///     \cgalParamType{`bool`}
-///     \cgalParamDefault{`true`}
+///     \cgalParamDefault{`default_smooth_borders` (`true`)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{merge_charts}
 ///     \cgalParamDescription{whether adjacent charts are merged, once chosen, when their union is a disk

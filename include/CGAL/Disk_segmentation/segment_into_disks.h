@@ -51,11 +51,13 @@ namespace Disk_segmentation {
 ///        `("segmentation", s, 3)` after each step `s` (and `s = 0` first); its `false`
 ///        stops the work with `Cancelled` (see \ref DS_Errors)
 ///
-/// With `smooth_borders(true)` (not in the paper; `false` by default here,
-/// `true` in `uv_atlas()`), the refined regions lose the saw teeth of their
-/// borders before they are merged: a face of one region with two edges on
-/// the border of another moves to it when both stay disks, which shortens
-/// the border (see the manual).
+/// With `smooth_borders(true)` (not in the paper; the default,
+/// `default_smooth_borders`, as in every function), the refined regions
+/// lose the saw teeth of their borders before they are merged: a face of
+/// one region with two edges on the border of another moves to it when both
+/// stay disks, which shortens the border (see the manual).
+/// `smooth_borders(false)` gives the paper's segmentation: the three
+/// functions run one after the other.
 ///
 /// @return the number `P` of patches; every patch is a topological disk
 ///
@@ -78,7 +80,7 @@ std::size_t segment_into_disks(const TriangleMesh& tm,
   static_assert(internal::Check_patch_map<FacePatchMap>::value, "");
   static_assert(internal::Check_named_parameters<NamedParameters>::value, "");
   // One instantiation of the stages for any chain of values (see canonical_parameters()).
-  const auto stage_parameters = internal::canonical_parameters(np, false);
+  const auto stage_parameters = internal::canonical_parameters(np);
   internal::Indexed_triangle_mesh m;
   std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> face_handles;
   internal::build_indexed_triangle_mesh(tm, stage_parameters, m, face_handles);
@@ -91,7 +93,7 @@ std::size_t segment_into_disks(const TriangleMesh& tm,
   const internal::Segmentation_steps steps = internal::segment_indexed(
     m, face_handles, stage_parameters, labels, tree != nullptr ? &staged_tree : nullptr,
     CGAL::parameters::choose_parameter(
-      CGAL::parameters::get_parameter(stage_parameters, internal_np::smooth_borders), false),
+      CGAL::parameters::get_parameter(stage_parameters, internal_np::smooth_borders), default_smooth_borders),
     progress);
   if(tree != nullptr)
   {

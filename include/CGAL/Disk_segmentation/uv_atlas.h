@@ -88,7 +88,7 @@ void check_uv_atlas_parameters(const NamedParameters& np = parameters::default_v
 ///   \cgalParamNBegin{smooth_borders}
 ///     \cgalParamDescription{whether chart borders lose their saw teeth (see `segment_into_disks()`)}
 ///     \cgalParamType{`bool`}
-///     \cgalParamDefault{`true` (not in the paper)}
+///     \cgalParamDefault{`default_smooth_borders` (`true`, not in the paper)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{straighten_borders}
 ///     \cgalParamDescription{whether the borders between the final charts are rerouted along shorter
@@ -178,7 +178,7 @@ Atlas_report uv_atlas(const TriangleMesh& tm, UVMap uv_map, const NamedParameter
   packing.progress = &progress;
   // The stages see the values as checked settings and a chain whose type
   // depends only on the maps given: they compile once for any chain of values.
-  const auto stage_parameters = internal::canonical_parameters(np, true);
+  const auto stage_parameters = internal::canonical_parameters(np);
   Merge_tree tree;
   std::vector<face_descriptor> seeds;
   const Staged_uv_map staged_uv = get(CGAL::dynamic_halfedge_property_t<UV_point>(), tm);

@@ -102,7 +102,7 @@ Multi_mesh_atlas_report uv_atlas_of_meshes(const std::vector<const TriangleMesh*
   internal::Progress progress = internal::Progress::from(np);
   packing.progress = &progress;
   const internal::Parameterization_settings settings = internal::parameterization_settings(np);
-  const auto stage_parameters = internal::canonical_parameters(np, true);
+  const auto stage_parameters = internal::canonical_parameters(np);
 
   // Each mesh alone, into maps of its own.
   Multi_mesh_atlas_report report;

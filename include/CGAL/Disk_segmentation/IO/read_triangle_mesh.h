@@ -112,6 +112,23 @@ std::string soup_reference_problem(const std::vector<Point>& points,
   return std::string();
 }
 
+// Names a triangle with the same three vertices as an earlier one, if any.
+inline std::string duplicated_face_problem(const std::vector<std::vector<std::size_t> >& polygons)
+{
+  std::vector<std::array<std::size_t, 4> > sorted_faces(polygons.size());
+  for(std::size_t f = 0; f < polygons.size(); ++f)
+  {
+    sorted_faces[f] = {{ polygons[f][0], polygons[f][1], polygons[f][2], f }};
+    std::sort(sorted_faces[f].begin(), sorted_faces[f].begin() + 3);
+  }
+  std::sort(sorted_faces.begin(), sorted_faces.end());
+  for(std::size_t i = 1; i < sorted_faces.size(); ++i)
+    if(std::equal(sorted_faces[i].begin(), sorted_faces[i].begin() + 3, sorted_faces[i - 1].begin()))
+      return "face #" + std::to_string(sorted_faces[i][3]) + " duplicates face #" +
+             std::to_string(sorted_faces[i - 1][3]) + " (same three vertices)";
+  return std::string();
+}
+
 // Names the first reason why the soup is not a manifold, consistently
 // oriented triangle mesh; empty if it is one. With `split_pinched_vertices`,
 // a vertex whose faces form several fans (a pinched vertex) is no problem:
@@ -140,19 +157,9 @@ std::string triangle_soup_problem(std::vector<Point>& points,
 
   // Duplicated faces first: they would otherwise be reported as a
   // non-manifold or inconsistently oriented edge.
-  {
-    std::vector<std::array<std::size_t, 4> > sorted_faces(polygons.size());
-    for(std::size_t f = 0; f < polygons.size(); ++f)
-    {
-      sorted_faces[f] = {{ polygons[f][0], polygons[f][1], polygons[f][2], f }};
-      std::sort(sorted_faces[f].begin(), sorted_faces[f].begin() + 3);
-    }
-    std::sort(sorted_faces.begin(), sorted_faces.end());
-    for(std::size_t i = 1; i < sorted_faces.size(); ++i)
-      if(std::equal(sorted_faces[i].begin(), sorted_faces[i].begin() + 3, sorted_faces[i - 1].begin()))
-        return "face #" + std::to_string(sorted_faces[i][3]) + " duplicates face #" +
-               std::to_string(sorted_faces[i - 1][3]) + " (same three vertices)";
-  }
+  const std::string duplicate = duplicated_face_problem(polygons);
+  if(!duplicate.empty())
+    return duplicate;
 
   // Every directed edge as (smaller vertex, larger vertex, corner of the
   // smaller vertex, direction), sorted so that the uses of one undirected

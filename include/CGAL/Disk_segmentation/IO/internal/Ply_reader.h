@@ -209,17 +209,12 @@ inline std::size_t ply_property_index(const Ply_element& element, const char* na
   return k;
 }
 
-
-// Reads a PLY file: the `vertex` (or `vertices`) element's x, y and z, of
-// any scalar type, and the `face` (or `faces`) element's `vertex_indices`
-// (or `vertex_index`) list, of any count and index type; elements may come
-// in any order, and other elements and properties are skipped.
-template <typename Point>
-void read_PLY_soup(std::string_view bytes, const std::string& name, std::vector<Point>& points,
-                   std::vector<std::vector<std::size_t> >& polygons)
+// The header of a PLY file, up to its end_header line: its format and its
+// elements, in order. Throws File_error (through `header`) on anything it
+// does not read. `total_size` is the size of the whole file.
+inline std::vector<Ply_element> read_ply_header(Text_scanner& header, std::string_view header_text,
+                                                std::size_t total_size, Ply_values::Format& format)
 {
-  const std::string_view header_text = bytes.substr(0, max_ply_header_bytes);
-  Text_scanner header(header_text, name, "ply");
   std::vector<std::string_view> tokens;
   if(!header.next_tokens(tokens, '\0'))
     header.fail_file("it is empty");
@@ -228,7 +223,7 @@ void read_PLY_soup(std::string_view bytes, const std::string& name, std::vector<
   if(!header.next_line())
     header.fail_file("the header ends after its first line");
   split_tokens(header.line(), tokens, '\0');
-  Ply_values::Format format = Ply_values::ASCII;
+  format = Ply_values::ASCII;
   double version = 0;
   if(tokens.size() != 3 || tokens[0] != "format")
     header.fail("expected 'format ascii 1.0' (or binary_little_endian, binary_big_endian), found " +
@@ -247,7 +242,7 @@ void read_PLY_soup(std::string_view bytes, const std::string& name, std::vector<
   // Each pass takes a line of the header's first MiB.
   while(!header_ended && header.next_line())
   {
-    if(header.next_line_offset() == header_text.size() && header_text.size() < bytes.size() &&
+    if(header.next_line_offset() == header_text.size() && header_text.size() < total_size &&
        header_text.back() != '\n')
       break;  // a line cut by the header limit
     split_tokens(header.line(), tokens, '\0');
@@ -281,14 +276,17 @@ void read_PLY_soup(std::string_view bytes, const std::string& name, std::vector<
       header.fail("unknown header keyword " + quote_token(tokens[0]));
   }
   if(!header_ended)
-    header.fail_file(bytes.size() > max_ply_header_bytes
+    header.fail_file(total_size > max_ply_header_bytes
                        ? "no end_header line in its first " + size_text(max_ply_header_bytes)
                        : std::string("the header has no end_header line"));
+  return elements;
+}
 
-  // Every item takes a minimum number of bytes: the counts must fit in the
-  // body before anything is allocated for them.
-  const std::size_t body_offset = header.next_line_offset();
-  const std::size_t body_size = bytes.size() - body_offset;
+// Every item takes a minimum number of bytes: the counts must fit in the
+// body before anything is allocated for them.
+inline void check_ply_counts(const Text_scanner& header, const std::vector<Ply_element>& elements,
+                             Ply_values::Format format, std::size_t body_size)
+{
   std::size_t needed = 0;
   for(const Ply_element& element : elements)
   {
@@ -302,15 +300,21 @@ void read_PLY_soup(std::string_view bytes, const std::string& name, std::vector<
                                             std::to_string(body_size) + " bytes after the header");
     needed += element.count * item_bytes;
   }
+}
 
-  Ply_values values(bytes.substr(body_offset), body_offset, header.line_number() + 1, format, name);
-  bool vertices_seen = false, faces_seen = false;
-  for(const Ply_element& element : elements)
+// What the reader takes from an element: the properties of a vertex
+// element's x, y and z, and a face element's list of vertex indices (the
+// number of properties where there is none).
+struct Ply_element_roles
+{
+  bool is_vertex, is_face;
+  std::size_t xyz_index[3] = { 0, 0, 0 };
+  std::size_t face_list;
+
+  Ply_element_roles(const Text_scanner& header, const Ply_element& element)
+    : is_vertex(element.name == "vertex" || element.name == "vertices"),
+      is_face(element.name == "face" || element.name == "faces"), face_list(element.properties.size())
   {
-    const bool is_vertex = element.name == "vertex" || element.name == "vertices";
-    const bool is_face = element.name == "face" || element.name == "faces";
-    std::size_t xyz_index[3] = { 0, 0, 0 };
-    std::size_t face_list = element.properties.size();
     if(is_vertex)
       for(int i = 0; i < 3; ++i)
       {
@@ -329,17 +333,70 @@ void read_PLY_soup(std::string_view bytes, const std::string& name, std::vector<
         header.fail_at(element.header_line, "element " + quote_token(element.name) +
                                               " has no list property 'vertex_indices' (or 'vertex_index')");
     }
-    vertices_seen = vertices_seen || is_vertex;
-    faces_seen = faces_seen || is_face;
+  }
+};
+
+// Reads a list property of the current item; its entries go to `polygon`
+// if it is the face list. Its length was checked against the bytes left,
+// and every value read takes at least one byte.
+inline void read_ply_list(Ply_values& values, const Ply_property& property, bool is_face_list,
+                          std::vector<std::size_t>& polygon)
+{
+  const double length = values.next(property.count_type);
+  // ASCII: an entry and a blank; the file's last entry may lack the blank.
+  const std::size_t most_entries = values.format() == Ply_values::ASCII
+                                     ? (values.bytes_left() + 1) / 2
+                                     : values.bytes_left() / ply_type_info(property.type).size;
+  if(length < 0 || length != std::floor(length))
+    values.fail(values.item() + ": the list '" + property.name + "' has the length " +
+                values.last_value(length) + (length < 0 ? ", a negative count" : ", not a whole number"));
+  if(length > double(most_entries))
+    values.fail(values.item() + ": the list '" + property.name + "' declares " +
+                std::to_string((unsigned long long)length) + " entries, more than the " +
+                std::to_string(values.bytes_left()) + " bytes left in the file hold");
+  if(is_face_list)
+    polygon.resize(std::size_t(length));
+  for(std::size_t i = 0; i < std::size_t(length); ++i)
+  {
+    const double entry = values.next(property.type);
+    if(!is_face_list)
+      continue;
+    if(entry < 0 || entry != std::floor(entry) || entry > 9007199254740992.)
+      values.fail(values.item() + " has the index " + values.last_value(entry) + ", which is not a vertex index");
+    polygon[i] = std::size_t(entry);
+  }
+}
+
+// Reads a PLY file: the `vertex` (or `vertices`) element's x, y and z, of
+// any scalar type, and the `face` (or `faces`) element's `vertex_indices`
+// (or `vertex_index`) list, of any count and index type; elements may come
+// in any order, and other elements and properties are skipped.
+template <typename Point>
+void read_PLY_soup(std::string_view bytes, const std::string& name, std::vector<Point>& points,
+                   std::vector<std::vector<std::size_t> >& polygons)
+{
+  const std::string_view header_text = bytes.substr(0, max_ply_header_bytes);
+  Text_scanner header(header_text, name, "ply");
+  Ply_values::Format format = Ply_values::ASCII;
+  const std::vector<Ply_element> elements = read_ply_header(header, header_text, bytes.size(), format);
+  const std::size_t body_offset = header.next_line_offset();
+  check_ply_counts(header, elements, format, bytes.size() - body_offset);
+
+  Ply_values values(bytes.substr(body_offset), body_offset, header.line_number() + 1, format, name);
+  bool vertices_seen = false, faces_seen = false;
+  for(const Ply_element& element : elements)
+  {
+    const Ply_element_roles roles(header, element);
+    vertices_seen = vertices_seen || roles.is_vertex;
+    faces_seen = faces_seen || roles.is_face;
     if(element.properties.empty())
       continue;
-    if(is_vertex)
+    if(roles.is_vertex)
       points.reserve(points.size() + element.count);
-    if(is_face)
+    if(roles.is_face)
       polygons.reserve(polygons.size() + element.count);
 
-    // element.count and the list lengths were checked against the bytes
-    // left, and every value read takes at least one byte.
+    // element.count was checked against the bytes left.
     double xyz[3] = { 0, 0, 0 };
     for(std::size_t item = 0; item < element.count; ++item)
     {
@@ -348,46 +405,23 @@ void read_PLY_soup(std::string_view bytes, const std::string& name, std::vector<
       for(std::size_t k = 0; k < element.properties.size(); ++k)
       {
         const Ply_property& property = element.properties[k];
-        if(!property.is_list)
+        if(property.is_list)
         {
-          const double value = values.next(property.type);
-          for(int i = 0; i < 3; ++i)
-            if(is_vertex && k == xyz_index[i])
-            {
-              if(!std::isfinite(value))
-                values.fail(values.item() + " has a non-finite coordinate " + values.last_value(value));
-              xyz[i] = value;
-            }
+          read_ply_list(values, property, k == roles.face_list, polygon);
           continue;
         }
-        const double length = values.next(property.count_type);
-        // ASCII: an entry and a blank; the file's last entry may lack the blank.
-        const std::size_t most_entries = values.format() == Ply_values::ASCII
-                                           ? (values.bytes_left() + 1) / 2
-                                           : values.bytes_left() / ply_type_info(property.type).size;
-        if(length < 0 || length != std::floor(length))
-          values.fail(values.item() + ": the list '" + property.name + "' has the length " +
-                      values.last_value(length) + (length < 0 ? ", a negative count" : ", not a whole number"));
-        if(length > double(most_entries))
-          values.fail(values.item() + ": the list '" + property.name + "' declares " +
-                      std::to_string((unsigned long long)length) + " entries, more than the " +
-                      std::to_string(values.bytes_left()) + " bytes left in the file hold");
-        if(k == face_list)
-          polygon.resize(std::size_t(length));
-        for(std::size_t i = 0; i < std::size_t(length); ++i)
-        {
-          const double entry = values.next(property.type);
-          if(k != face_list)
-            continue;
-          if(entry < 0 || entry != std::floor(entry) || entry > 9007199254740992.)
-            values.fail(values.item() + " has the index " + values.last_value(entry) +
-                        ", which is not a vertex index");
-          polygon[i] = std::size_t(entry);
-        }
+        const double value = values.next(property.type);
+        for(int i = 0; i < 3; ++i)
+          if(roles.is_vertex && k == roles.xyz_index[i])
+          {
+            if(!std::isfinite(value))
+              values.fail(values.item() + " has a non-finite coordinate " + values.last_value(value));
+            xyz[i] = value;
+          }
       }
-      if(is_vertex)
+      if(roles.is_vertex)
         points.emplace_back(xyz[0], xyz[1], xyz[2]);
-      if(is_face)
+      if(roles.is_face)
         polygons.push_back(std::move(polygon));
     }
   }

@@ -57,7 +57,8 @@ Atlas_report segment_and_parameterize(const TriangleMesh& tm, FacePatchMap face_
       std::vector<Index> labels;
       const Segmentation_steps steps = segment_indexed(
         input.mesh, input.face_handles, np, labels, &tree,
-        choose_parameter(get_parameter(np, Disk_segmentation::internal_np::smooth_borders), true), progress);
+        choose_parameter(get_parameter(np, Disk_segmentation::internal_np::smooth_borders), default_smooth_borders),
+        progress);
       // Charts only split from here: too many patches for the padding can
       // be told before the parameterization.
       check_packing_capacity(packing, steps.patches);

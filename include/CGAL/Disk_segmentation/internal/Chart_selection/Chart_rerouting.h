@@ -4,6 +4,7 @@
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_CHART_SELECTION_CHART_REROUTING_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_CHART_SELECTION_CHART_REROUTING_H
 
+#include <CGAL/Disk_segmentation/internal/Chart_selection/Chart_choice.h>
 #include <CGAL/Disk_segmentation/internal/Chart_selection/Border_rerouting.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Chart_distortion.h>
 #include <CGAL/Disk_segmentation/internal/Chart_selection/Chart_merging.h>
@@ -84,6 +85,26 @@ std::vector<Arc_change> reroute_arcs(const Indexed_triangle_mesh& m, Region_topo
   return changes;
 }
 
+// The faces of chart `i` (`chart` before the changes) under `labels`: those
+// it kept, and those it gained through its changes not given back; sorted.
+inline std::vector<Index> current_faces(const Chart& chart, std::size_t i, const std::vector<Index>& labels,
+                                        const std::vector<Arc_change>& changes,
+                                        const std::vector<std::size_t>& changes_of_i,
+                                        const std::vector<char>& given_back)
+{
+  std::vector<Index> f;
+  for(Index g : chart.faces)
+    if(labels[g] == i)
+      f.push_back(g);
+  for(std::size_t k : changes_of_i)
+    if(!given_back[k])
+      for(const auto& moved : changes[k].old_labels)
+        if(labels[moved.first] == i && moved.second != i)
+          f.push_back(moved.first);
+  std::sort(f.begin(), f.end());
+  return f;
+}
+
 // Straightens the borders between the kept charts (see Border_router), then
 // parameterizes again every chart whose faces changed. A chart that is then
 // invalid, no longer a disk, above the size cap or over the bound (`rule`)
@@ -94,10 +115,11 @@ std::vector<Arc_change> reroute_arcs(const Indexed_triangle_mesh& m, Region_topo
 // parameterized independently, so the result does not depend on the
 // schedule. Returns the number of arcs kept rerouted.
 template <typename Rule, typename ForEach>
-std::size_t reroute_kept_charts(const Indexed_triangle_mesh& m, Region_topology& topology,
-                                std::vector<Kept_chart>& kept, const Rule& rule, Parameterization_method method,
-                                bool use_fallback, const ForEach& for_each)
+std::size_t reroute_kept_charts(const Chart_choice<Rule>& choice, Region_topology& topology,
+                                std::vector<Kept_chart>& kept, const ForEach& for_each)
 {
+  const Indexed_triangle_mesh& m = choice.mesh;
+  const Rule& rule = choice.needs_split;
   const std::size_t n = kept.size();
   std::vector<Index> labels(m.number_of_faces(), no_index);
   std::vector<std::size_t> size(n, 0);
@@ -164,25 +186,14 @@ std::size_t reroute_kept_charts(const Indexed_triangle_mesh& m, Region_topology&
       dirty[i] = 0;
       if(!modified(i))
         continue;
-      std::vector<Index> f;
-      for(Index g : kept[i].chart.faces)
-        if(labels[g] == i)
-          f.push_back(g);
-      for(std::size_t k : changes_of[i])
-        if(!given_back[k])
-          for(const auto& moved : changes[k].old_labels)
-            if(labels[moved.first] == i && moved.second != i)
-              f.push_back(moved.first);
-      std::sort(f.begin(), f.end());
       to_solve.push_back(i);
-      faces.push_back(std::move(f));
+      faces.push_back(current_faces(kept[i].chart, i, labels, changes, changes_of[i], given_back));
     }
     std::vector<char> failed(to_solve.size(), 0);
     // The disk test shares its scratch arrays: before the parallel part.
     // Giving arcs back may grow a chart past the size cap again.
     for(std::size_t j = 0; j < to_solve.size(); ++j)
       failed[j] = !rule.too_large(faces[j].size()) && topology.is_disk(faces[j]) ? 0 : 1;
-    const Arap_early_look early_look = rule.early_look();
     auto chart_size = [&](std::size_t j) { return faces[j].size(); };
     for_each_largest_first(for_each, to_solve.size(), chart_size, [&](std::size_t j) {
       if(failed[j])
@@ -192,8 +203,8 @@ std::size_t reroute_kept_charts(const Indexed_triangle_mesh& m, Region_topology&
       // From LSCM: the two former maps glued (as merges start) fold or
       // break the bound far more often (dino: 2 of 119 arcs kept, against
       // 20 from LSCM).
-      Early_look look{ &early_look, Early_judgement() };
-      outcomes[i] = parameterize_chart(m, rerouted[i], method, use_fallback, rule.on_invalid_map(), &look);
+      Early_look look{ &choice.early_look, Early_judgement() };
+      outcomes[i] = parameterize_chart(m, rerouted[i], choice.method, choice.use_fallback, rule.on_invalid_map(), &look);
       failed[j] = rule(rerouted[i], outcomes[i], look.ended) ? 1 : 0;
     });
     bool any = false;

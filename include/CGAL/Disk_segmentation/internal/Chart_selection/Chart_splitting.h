@@ -8,6 +8,7 @@
 
 #include <CGAL/Disk_segmentation/Distortion_bound.h>
 #include <CGAL/Disk_segmentation/Parameterization_method.h>
+#include <CGAL/Disk_segmentation/internal/Chart_selection/Chart_choice.h>
 #include <CGAL/Disk_segmentation/internal/Chart_selection/Chart_merging.h>
 #include <CGAL/Disk_segmentation/internal/Execution/parallel.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Indexed_triangle_mesh.h>
@@ -172,11 +173,11 @@ enum class Region_trial
 // region's parts, with its `excess_density`. `chart` and `outcome` are
 // those of a kept chart; `outcome.problem` is also why a rejected one was.
 template <typename NeedsSplit>
-Region_trial try_region(const Indexed_triangle_mesh& m, Splitter& splitter, const std::vector<Index>& faces,
-                        Parameterization_method requested, bool use_fallback, const NeedsSplit& needs_split,
-                        const Arap_early_look& early_look, double& excess_density, Parent_chart& parent,
-                        Chart& chart, Chart_outcome& outcome)
+Region_trial try_region(const Chart_choice<NeedsSplit>& choice, Splitter& splitter, const std::vector<Index>& faces,
+                        double& excess_density, Parent_chart& parent, Chart& chart, Chart_outcome& outcome)
 {
+  const Indexed_triangle_mesh& m = choice.mesh;
+  const NeedsSplit& needs_split = choice.needs_split;
   const double area = region_area(m, faces);
   if(needs_split.too_large(faces.size()) || needs_split.predicted_over_bound(excess_density, area, faces.size()))
     return Region_trial::too_large;
@@ -187,8 +188,8 @@ Region_trial try_region(const Indexed_triangle_mesh& m, Splitter& splitter, cons
     return Region_trial::kept;
   if(parent && has_elimination_order(parent->first))
     inherit_restricted_order(m, parent->first, chart);
-  Early_look look{ &early_look, Early_judgement() };
-  outcome = parameterize_chart(m, chart, requested, use_fallback, needs_split.on_invalid_map(), &look);
+  Early_look look{ &choice.early_look, Early_judgement() };
+  outcome = parameterize_chart(m, chart, choice.method, choice.use_fallback, needs_split.on_invalid_map(), &look);
   double excess = 0.;
   if(faces.size() == 1 || !needs_split(chart, outcome, excess, look.ended))
     return Region_trial::kept;
@@ -213,16 +214,16 @@ Region_trial try_region(const Indexed_triangle_mesh& m, Splitter& splitter, cons
 // points all coincide, where zero arcs would let a split take only one
 // face off, is cut into single faces at once.
 template <typename NeedsSplit, typename Add, typename Keep, typename Reject>
-void split_step(const Indexed_triangle_mesh& m, Splitter& splitter, Split_task& task, Parameterization_method requested,
-                bool use_fallback, const NeedsSplit& needs_split, const Arap_early_look& early_look, const Add& add,
+void split_step(const Chart_choice<NeedsSplit>& choice, Splitter& splitter, Split_task& task, const Add& add,
                 const Keep& keep, const Reject& reject)
 {
+  const Indexed_triangle_mesh& m = choice.mesh;
+  const NeedsSplit& needs_split = choice.needs_split;
   if(!task.split)
   {
     Chart c;
     Chart_outcome outcome;
-    const Region_trial trial = try_region(m, splitter, task.faces, requested, use_fallback, needs_split, early_look,
-                                          task.excess_density, task.parent, c, outcome);
+    const Region_trial trial = try_region(choice, splitter, task.faces, task.excess_density, task.parent, c, outcome);
     if(trial == Region_trial::kept)
     {
       keep(std::move(task.path), std::move(c), outcome);
@@ -246,7 +247,7 @@ void split_step(const Indexed_triangle_mesh& m, Splitter& splitter, Split_task& 
     for(std::size_t k = 0; k < task.faces.size(); ++k)
     {
       Chart c = make_chart(m, std::vector<Index>(1, task.faces[k]));
-      const Chart_outcome outcome = parameterize_chart(m, c, requested, use_fallback);
+      const Chart_outcome outcome = parameterize_chart(m, c, choice.method, choice.use_fallback);
       std::vector<std::size_t> path = task.path;
       path.push_back(k);
       keep(std::move(path), std::move(c), outcome);
@@ -294,19 +295,17 @@ void split_step(const Indexed_triangle_mesh& m, Splitter& splitter, Split_task& 
 // order of a recursion. The region_key() of every piece that was
 // parameterized and split again is added to `rejected`.
 template <typename NeedsSplit>
-void split_and_parameterize(const Indexed_triangle_mesh& m, Splitter& splitter, const std::vector<Index>& faces,
-                            Parameterization_method requested, bool use_fallback, std::vector<Chart>& pieces,
-                            std::vector<Chart_outcome>& outcomes, const NeedsSplit& needs_split,
+void split_and_parameterize(const Chart_choice<NeedsSplit>& choice, Splitter& splitter, const std::vector<Index>& faces,
+                            std::vector<Chart>& pieces, std::vector<Chart_outcome>& outcomes,
                             std::vector<std::uint64_t>& rejected, double excess_density = 0,
                             Parent_chart parent = Parent_chart())
 {
   if(faces.size() < 2)
     return;
-  const Arap_early_look early_look = needs_split.early_look();
   std::vector<Split_task> tasks;
   tasks.push_back(Split_task{ faces, excess_density, true, std::move(parent), std::vector<std::size_t>() });
   for_each_growing(std::move(tasks), 1, [&](Split_task& task, const auto& add) {
-    split_step(m, splitter, task, requested, use_fallback, needs_split, early_look, add,
+    split_step(choice, splitter, task, add,
                [&](std::vector<std::size_t>, Chart&& c, const Chart_outcome& outcome) {
                  pieces.push_back(std::move(c));
                  outcomes.push_back(outcome);

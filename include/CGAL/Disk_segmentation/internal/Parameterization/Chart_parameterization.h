@@ -521,6 +521,86 @@ enum class On_invalid_map
   report   // nothing: the caller replaces the chart by smaller ones
 };
 
+// Charts with one triangle are laid out isometrically: fixed-border
+// solvers have no unknown to solve for and free-border ones are overkill.
+inline void lay_out_single_triangle(const Indexed_triangle_mesh& m, Chart& c)
+{
+  const auto& p0 = m.points[c.vertices[0]];
+  const auto& p1 = m.points[c.vertices[1]];
+  const auto& p2 = m.points[c.vertices[2]];
+  const double l1 = Indexed_triangle_mesh::distance(p0, p1);
+  const double e[3] = { p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2] };
+  const double f[3] = { p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2] };
+  const double x = l1 > 0 ? (e[0] * f[0] + e[1] * f[1] + e[2] * f[2]) / l1 : 0.;
+  const double cx = e[1] * f[2] - e[2] * f[1], cy = e[2] * f[0] - e[0] * f[2], cz = e[0] * f[1] - e[1] * f[0];
+  const double y = l1 > 0 ? std::sqrt(cx * cx + cy * cy + cz * cz) / l1 : 0.;
+  c.uv[0] = {{ 0., 0. }};
+  c.uv[1] = {{ l1, 0. }};
+  c.uv[2] = {{ x, y }};
+  // A degenerate face (collinear or coincident corners), or a needle whose
+  // smallest height is under 1e-6 of its longest side, has no isometric
+  // layout that survives packing (its corners would round to a line); an
+  // equilateral triangle keeps the chart valid.
+  const double longest = (std::max)(l1, (std::max)(Indexed_triangle_mesh::distance(p1, p2),
+                                                   Indexed_triangle_mesh::distance(p2, p0)));
+  const double smallest_height = longest > 0 ? l1 * y / longest : 0.;
+  if(!(smallest_height > 1e-6 * longest))
+  {
+    const double side = longest > 0 ? longest : 1.;
+    c.uv[1] = {{ side, 0. }};
+    c.uv[2] = {{ side / 2, side * std::sqrt(3.) / 2 }};
+  }
+}
+
+// ARAP once arap_from_lscm() failed: from SMP's LSCM, then from an
+// injective map on a circle, keeping only valid iterates.
+template <typename Circle, typename Direct_solver>
+std::string arap_from_other_starts(const Indexed_triangle_mesh& m, Chart& c, Chart_mesh& mesh,
+                                   Chart_mesh::Halfedge_index border, const std::vector<Index>& border_loop,
+                                   bool& validated, Early_look* look)
+{
+  namespace SMP = CGAL::Surface_mesh_parameterization;
+  // Local/global iterations with one factorization (see
+  // Local_global_arap.h for why not SMP::ARAP_parameterizer_3).
+  // arap_from_lscm() failed: a chart with several borders (a patch
+  // that is not a disk, with require_disk_patches(false)), which SMP's
+  // LSCM takes, or a fold that free iterations did not undo, which
+  // SMP's other choice of pinned vertices may avoid.
+  if(run_parameterizer(mesh, SMP::LSCM_parameterizer_3<Chart_mesh>(), border, c).empty())
+  {
+    keep_winding(c);
+    if(arap_from(c, border_loop, chart_geometry(m, c), c.uv, look))
+    {
+      validated = true;
+      return std::string();
+    }
+  }
+  // Then from an injective map on a circle, keeping only valid
+  // iterates. Mean value coordinates start closer to ARAP; Tutte's map,
+  // which ignores the geometry, is the start when near-degenerate 3D
+  // triangles make the mean value map invalid.
+  auto valid_start = [&](auto parameterizer) {
+    std::string problem = run_parameterizer(mesh, parameterizer, border, c);
+    if(problem.empty())
+    {
+      keep_winding(c);
+      problem = chart_uv_problem(c, c.uv, border_loop);
+    }
+    return problem;
+  };
+  if(!valid_start(SMP::Mean_value_coordinates_parameterizer_3<Chart_mesh, Circle, Direct_solver>()).empty())
+  {
+    const std::string problem =
+      valid_start(SMP::Barycentric_mapping_parameterizer_3<Chart_mesh, Circle, Direct_solver>());
+    if(!problem.empty())
+      return "ARAP: no valid initialization (" + problem + ")";
+  }
+  if(!arap_from(c, border_loop, chart_geometry(m, c), c.uv, look))
+    return "ARAP: cannot factor the cotangent Laplacian (degenerate triangles)";
+  validated = true;
+  return std::string();
+}
+
 // Runs one method on the chart; returns an empty string on success, else
 // what went wrong. The UVs are left in `c.uv` in either case; `validated`
 // says whether they were found valid (ARAP checks its result).
@@ -567,35 +647,9 @@ inline std::string parameterize_chart_with(const Indexed_triangle_mesh& m, Chart
   for(Chart_mesh::Halfedge_index h : CGAL::halfedges_around_face(border, mesh))
     border_loop.push_back(static_cast<Index>(std::size_t(mesh.target(h))));
 
-  // Charts with one triangle are laid out isometrically: fixed-border
-  // solvers have no unknown to solve for and free-border ones are overkill.
   if(c.triangles.size() == 1)
   {
-    const auto& p0 = m.points[c.vertices[0]];
-    const auto& p1 = m.points[c.vertices[1]];
-    const auto& p2 = m.points[c.vertices[2]];
-    const double l1 = Indexed_triangle_mesh::distance(p0, p1);
-    const double e[3] = { p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2] };
-    const double f[3] = { p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2] };
-    const double x = l1 > 0 ? (e[0] * f[0] + e[1] * f[1] + e[2] * f[2]) / l1 : 0.;
-    const double cx = e[1] * f[2] - e[2] * f[1], cy = e[2] * f[0] - e[0] * f[2], cz = e[0] * f[1] - e[1] * f[0];
-    const double y = l1 > 0 ? std::sqrt(cx * cx + cy * cy + cz * cz) / l1 : 0.;
-    c.uv[0] = {{ 0., 0. }};
-    c.uv[1] = {{ l1, 0. }};
-    c.uv[2] = {{ x, y }};
-    // A degenerate face (collinear or coincident corners), or a needle whose
-    // smallest height is under 1e-6 of its longest side, has no isometric
-    // layout that survives packing (its corners would round to a line); an
-    // equilateral triangle keeps the chart valid.
-    const double longest = (std::max)(l1, (std::max)(Indexed_triangle_mesh::distance(p1, p2),
-                                                     Indexed_triangle_mesh::distance(p2, p0)));
-    const double smallest_height = longest > 0 ? l1 * y / longest : 0.;
-    if(!(smallest_height > 1e-6 * longest))
-    {
-      const double side = longest > 0 ? longest : 1.;
-      c.uv[1] = {{ side, 0. }};
-      c.uv[2] = {{ side / 2, side * std::sqrt(3.) / 2 }};
-    }
+    lay_out_single_triangle(m, c);
     return std::string();
   }
 
@@ -615,47 +669,7 @@ inline std::string parameterize_chart_with(const Indexed_triangle_mesh& m, Chart
     case Parameterization_method::LSCM:
       return run_parameterizer(mesh, SMP::LSCM_parameterizer_3<Chart_mesh>(), border, c);
     case Parameterization_method::ARAP:
-    {
-      // Local/global iterations with one factorization (see
-      // Local_global_arap.h for why not SMP::ARAP_parameterizer_3).
-      // arap_from_lscm() failed: a chart with several borders (a patch
-      // that is not a disk, with require_disk_patches(false)), which SMP's
-      // LSCM takes, or a fold that free iterations did not undo, which
-      // SMP's other choice of pinned vertices may avoid.
-      if(run_parameterizer(mesh, SMP::LSCM_parameterizer_3<Chart_mesh>(), border, c).empty())
-      {
-        keep_winding(c);
-        if(arap_from(c, border_loop, chart_geometry(m, c), c.uv, look))
-        {
-          validated = true;
-          return std::string();
-        }
-      }
-      // Then from an injective map on a circle, keeping only valid
-      // iterates. Mean value coordinates start closer to ARAP; Tutte's map,
-      // which ignores the geometry, is the start when near-degenerate 3D
-      // triangles make the mean value map invalid.
-      auto valid_start = [&](auto parameterizer) {
-        std::string problem = run_parameterizer(mesh, parameterizer, border, c);
-        if(problem.empty())
-        {
-          keep_winding(c);
-          problem = chart_uv_problem(c, c.uv, border_loop);
-        }
-        return problem;
-      };
-      if(!valid_start(SMP::Mean_value_coordinates_parameterizer_3<Chart_mesh, Circle, Direct_solver>()).empty())
-      {
-        const std::string problem =
-          valid_start(SMP::Barycentric_mapping_parameterizer_3<Chart_mesh, Circle, Direct_solver>());
-        if(!problem.empty())
-          return "ARAP: no valid initialization (" + problem + ")";
-      }
-      if(!arap_from(c, border_loop, chart_geometry(m, c), c.uv, look))
-        return "ARAP: cannot factor the cotangent Laplacian (degenerate triangles)";
-      validated = true;
-      return std::string();
-    }
+      return arap_from_other_starts<Circle, Direct_solver>(m, c, mesh, border, border_loop, validated, look);
     case Parameterization_method::MEAN_VALUE:
       return run_parameterizer(mesh, SMP::Mean_value_coordinates_parameterizer_3<Chart_mesh, Circle, Direct_solver>(), border, c);
     case Parameterization_method::TUTTE:

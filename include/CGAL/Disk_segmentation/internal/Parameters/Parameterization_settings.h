@@ -66,7 +66,7 @@ Parameterization_settings parameterization_settings(const NamedParameters& np)
   s.require_disks = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::require_disk_patches), true);
   s.threads = number_of_threads_parameter(np);
   s.bound = distortion_bound_parameters(np);
-  s.smooth_borders = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::smooth_borders), true);
+  s.smooth_borders = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::smooth_borders), default_smooth_borders);
   s.merge_charts = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::merge_charts), true);
   s.straighten_borders =
     choose_parameter(get_parameter(np, Disk_segmentation::internal_np::straighten_borders), true);

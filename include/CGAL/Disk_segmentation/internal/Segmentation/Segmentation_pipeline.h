@@ -40,10 +40,9 @@ struct Segmentation_steps
 
 // The segmentation's values, read as the stages read them (counts checked
 // there, the threshold here), and the mesh's (forward_mesh_parameters()); `smooth_borders`
-// is always given (its default differs between uv_atlas() and
-// segment_into_disks()).
+// is always given, so that a chain with it and one without are one type.
 template <typename NamedParameters>
-auto canonical_parameters(const NamedParameters& np, bool default_smooth_borders)
+auto canonical_parameters(const NamedParameters& np)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;

@@ -1,0 +1,42 @@
+// Copyright (c) 2026 The Disk_segmentation authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_DISK_SEGMENTATION_INTERNAL_CHART_SELECTION_CHART_CHOICE_H
+#define CGAL_DISK_SEGMENTATION_INTERNAL_CHART_SELECTION_CHART_CHOICE_H
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Disk_segmentation/Parameterization_method.h>
+#include <CGAL/Disk_segmentation/internal/Mesh/Indexed_triangle_mesh.h>
+#include <CGAL/Disk_segmentation/internal/Parameterization/Chart_parameterization.h>
+
+namespace CGAL {
+namespace Disk_segmentation {
+namespace internal {
+
+// What every choice of a chart in one call shares, whether the chart comes
+// from the merge tree, a split, a merge or a rerouted border: the mesh, the
+// method asked for, whether the fallbacks run, the rule that says when a
+// chart is replaced by smaller ones (Split_rule) and that rule's early look
+// at ARAP's iterations.
+template <typename Rule>
+struct Chart_choice
+{
+  const Indexed_triangle_mesh& mesh;
+  Parameterization_method method;
+  bool use_fallback;
+  const Rule& needs_split;
+  Arap_early_look early_look;
+
+  Chart_choice(const Indexed_triangle_mesh& m, Parameterization_method requested, bool fallback, const Rule& rule)
+    : mesh(m), method(requested), use_fallback(fallback), needs_split(rule), early_look(rule.early_look())
+  {}
+};
+
+} // namespace internal
+} // namespace Disk_segmentation
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_DISK_SEGMENTATION_INTERNAL_CHART_SELECTION_CHART_CHOICE_H
