@@ -169,7 +169,10 @@ void run_case(const Case_settings& s, const Reporter& report)
                        np.distortion_bound(DS::Distortion_bound::unbounded())
                          .smooth_borders(false));
     else if(s.segmentation == "ours-nofallback")
-      p = parameterize(mesh, patches, uv, np.use_fallback(false).smooth_borders(false));
+      p = parameterize(mesh, patches, uv,
+                       np.use_fallback(false)
+                         .distortion_bound(DS::Distortion_bound::unbounded())
+                         .smooth_borders(false));
     else
       p = parameterize(mesh, patches, uv, np.use_fallback(false).require_disk_patches(false));
   }

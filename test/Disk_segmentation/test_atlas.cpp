@@ -266,6 +266,34 @@ TEST(Atlas, EveryChartMeetsTheDistortionBoundItIsGiven)
     EXPECT_TRUE(paper_breaks[i]) << "bound " << i << " is too loose to test anything";
 }
 
+TEST(Atlas, WithoutTheFallbackTheBoundMergesAndReroutesStillWork)
+{
+  // use_fallback(false) only keeps invalid charts: a chart over the bound is
+  // still split, and charts are still merged and their borders rerouted.
+  const double inf = std::numeric_limits<double>::infinity();
+  const DS::Distortion_bound tight = make_bound(0.03, inf, inf, inf);
+  for(const char* name : { "elephant.off", "knot1.off" })
+  {
+    SCOPED_TRACE(name);
+    Mesh paper_mesh = load(name);
+    const Atlas paper = make_atlas(paper_mesh, DS::parameters::distortion_bound(DS::Distortion_bound::unbounded())
+                                                 .use_fallback(false));
+    ASSERT_FALSE(charts_meet(paper_mesh, paper, tight)) << "the bound is too loose to test anything";
+
+    Mesh tm = load(name);
+    const Atlas bounded = make_atlas(tm, DS::parameters::distortion_bound(tight).use_fallback(false));
+    ASSERT_EQ(bounded.report.parameterization.number_of_invalid_charts, 0u);
+    expect_valid_atlas(tm, bounded);
+    EXPECT_TRUE(charts_meet(tm, bounded, tight));
+
+    // Merging and rerouting change the charts whether the fallback is on or off.
+    Mesh plain_mesh = load(name);
+    const Atlas plain = make_atlas(plain_mesh, DS::parameters::distortion_bound(tight).use_fallback(false)
+                                                 .merge_charts(false).straighten_borders(false));
+    EXPECT_LT(bounded.report.number_of_charts, plain.report.number_of_charts) << "no merge happened";
+  }
+}
+
 TEST(Atlas, MergingAcceptedChartsLeavesFewerChartsWithinTheBound)
 {
   std::size_t fewer = 0;
@@ -1855,13 +1883,13 @@ TEST(Atlas, TheEarlyVerdictOfTheSplitRuleFollowsTheBound)
   loose.max_stretch_p95 = 2.;
   const DS::internal::Split_rule loose_rule{ p.m, loose, DS::default_max_chart_faces, true };
   EXPECT_EQ(loose_rule.early_verdict(c, stretched).verdict, DS::internal::Early_verdict::iterate_on);
-  // No look without a bound or without the fallback.
+  // No look without a bound; the fallback, which is about validity only, does not matter.
   const DS::internal::Split_rule unbounded_rule{ p.m, DS::Distortion_bound::unbounded(), DS::default_max_chart_faces,
                                                  true };
   const DS::internal::Split_rule rule_without_fallback{ p.m, DS::Distortion_bound(), DS::default_max_chart_faces,
                                                         false };
   EXPECT_FALSE(unbounded_rule.early_look());
-  EXPECT_FALSE(rule_without_fallback.early_look());
+  EXPECT_TRUE(rule_without_fallback.early_look());
   EXPECT_TRUE(rule.early_look());
 }
 

@@ -88,13 +88,15 @@ namespace Disk_segmentation {
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{use_fallback}
 ///     \cgalParamDescription{whether invalid charts are redone (see above); when `false`, they are
-///       kept as the method produced them and reported invalid}
+///       kept as the method produced them and reported invalid. Only validity: the distortion
+///       bound, `merge_charts` and `straighten_borders` work the same either way (a chart over the
+///       bound is split, its pieces kept even if invalid)}
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{distortion_bound}
 ///     \cgalParamDescription{the distortion every chart of two faces or more must meet, and the
-///       convexity of the large ones (only with `use_fallback`); a single triangle is laid out
+///       convexity of the large ones; a single triangle is laid out
 ///       isometrically}
 ///     \cgalParamType{`Distortion_bound`}
 ///     \cgalParamDefault{`Distortion_bound()`; `Distortion_bound::unbounded()` keeps the paper's charts}
@@ -112,7 +114,7 @@ namespace Disk_segmentation {
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{merge_charts}
 ///     \cgalParamDescription{whether adjacent charts are merged, once chosen, when their union is a disk
-///       that meets the bound (only with `use_fallback` and a bound); merged charts may join pieces of
+///       that meets the bound (only under a bound); merged charts may join pieces of
 ///       different patches}
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`true`}
@@ -122,7 +124,7 @@ namespace Disk_segmentation {
 ///       two of them (from one junction to the next) is replaced by a shorter edge path near it that
 ///       prefers creases, the faces in between changing sides; the changed charts are parameterized
 ///       again, and an arc is given back wherever a chart stops being a disk or meeting the bound
-///       (only with `use_fallback` and a bound). Not in the paper.}
+///       (only under a bound). Not in the paper.}
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd

@@ -343,8 +343,9 @@ private:
 };
 
 // Whether a chart is replaced by smaller ones: before it is parameterized,
-// when it has more than `max_chart_faces` faces; after, with the fallback
-// on, when it is invalid or exceeds the distortion bound.
+// when it has more than `max_chart_faces` faces; after, when it exceeds the
+// distortion bound, or when it is invalid and the fallback is on (without
+// it, an invalid chart is kept and reported).
 struct Split_rule
 {
   const Indexed_triangle_mesh& m;
@@ -383,10 +384,8 @@ struct Split_rule
                   const Early_judgement& ended = Early_judgement()) const
   {
     measured_excess = 0.;
-    if(!use_fallback)
-      return false;
     if(!outcome.valid)
-      return true;
+      return use_fallback;
     if(bound.is_unbounded())
       return false;
     if(ended.verdict != Early_verdict::iterate_on)
@@ -467,7 +466,7 @@ struct Split_rule
   // without the fallback (every chart is then kept as it comes).
   Arap_early_look early_look() const
   {
-    if(!use_fallback || bound.is_unbounded())
+    if(bound.is_unbounded())
       return Arap_early_look();
     return [this](const Chart& c, const Chart_uv& uv) { return early_verdict(c, uv); };
   }

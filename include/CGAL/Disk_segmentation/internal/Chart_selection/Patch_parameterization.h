@@ -322,7 +322,7 @@ Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, con
                                 settings.require_disks);
 
   const Border_smoother smoother(m);
-  const bool bounded = settings.use_fallback && !settings.bound.is_unbounded();
+  const bool bounded = !settings.bound.is_unbounded();
   std::unique_ptr<Interior_curvature> curvature;
   if(bounded)
     curvature.reset(new Interior_curvature(m));
