@@ -351,7 +351,7 @@ TEST(Segmentation, FirstSeedAndRandomSeedParameters)
   std::vector<Mesh::Face_index> seeds;
   Patches<Mesh> patches(tm);
   DS::voronoi_fps_segmentation(tm, patches.map,
-    DS::parameters::first_seed(chosen).number_of_seeds(5).seeds_output_iterator(std::back_inserter(seeds)));
+    DS::parameters::testing::first_seed(chosen).number_of_seeds(5).seeds_output_iterator(std::back_inserter(seeds)));
   ASSERT_FALSE(seeds.empty());
   EXPECT_EQ(seeds.front(), chosen);
 
@@ -618,7 +618,7 @@ TEST(Errors, ParametersOutOfRange)
 
   const Mesh other = make<Mesh>(TS::uv_sphere(6, 8));
   Mesh::Face_index foreign(static_cast<Mesh::size_type>(num_faces(other) + 5));
-  EXPECT_NE(error_of([&] { DS::voronoi_fps_segmentation(tm, p.map, DS::parameters::first_seed(foreign)); })
+  EXPECT_NE(error_of([&] { DS::voronoi_fps_segmentation(tm, p.map, DS::parameters::testing::first_seed(foreign)); })
               .find("first_seed"), std::string::npos);
 }
 

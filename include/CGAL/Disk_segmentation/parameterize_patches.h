@@ -147,13 +147,6 @@ namespace Disk_segmentation {
 ///     \cgalParamType{`std::size_t`, at least 1}
 ///     \cgalParamDefault{no budget}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{require_disk_patches}
-///     \cgalParamDescription{when `false`, patches that are not topological disks are parameterized
-///       anyway, as a segmentation that ignores topology would be (for comparisons): they usually
-///       fail, which the report says, instead of an exception}
-///     \cgalParamType{`bool`}
-///     \cgalParamDefault{`true`}
-///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_threads}
 ///     \cgalParamDescription{maximum number of threads (0: TBB's choice; 1: sequential). Without TBB, sequential.}
 ///     \cgalParamType{`unsigned int`}
@@ -183,7 +176,7 @@ namespace Disk_segmentation {
 /// @return one report per chart and the counts of fallbacks, splits and invalid charts
 ///
 /// @throws Input_error on a bad mesh (as `voronoi_fps_segmentation()`), on patch ids that are not
-///         contiguous, or on a patch that is not a topological disk (unless `require_disk_patches(false)`).
+///         contiguous, or on a patch that is not a topological disk.
 ///
 /// Complexity, for `F` faces and `V` vertices, with `M` the smaller of `F`
 /// and `max_chart_faces`: expected \f$ O(F + V) \f$ time to read the mesh and

@@ -167,9 +167,6 @@ CGAL_DISK_SEGMENTATION_ADD_PARAMETER(number_of_subsamples_t, number_of_subsample
 /// Score threshold `eps` of the greedy merging.
 CGAL_DISK_SEGMENTATION_ADD_PARAMETER(merge_threshold_t, merge_threshold)
 /// \ingroup PkgDiskSegmentationRef
-/// Face used as the first farthest-point seed.
-CGAL_DISK_SEGMENTATION_ADD_PARAMETER(first_seed_t, first_seed)
-/// \ingroup PkgDiskSegmentationRef
 /// Output iterator receiving the seed faces in the order they were chosen.
 CGAL_DISK_SEGMENTATION_ADD_PARAMETER(seeds_output_iterator_t, seeds_output_iterator)
 /// \ingroup PkgDiskSegmentationRef
@@ -207,9 +204,6 @@ CGAL_DISK_SEGMENTATION_ADD_PARAMETER(number_of_threads_t, number_of_threads)
 /// calls are serialized. A result convertible to `bool` that is `false`
 /// stops the computation with `Cancelled`; a `void` result only follows it.
 CGAL_DISK_SEGMENTATION_ADD_PARAMETER(progress_callback_t, progress_callback)
-/// \ingroup PkgDiskSegmentationRef
-/// Whether `parameterize_patches()` refuses patches that are not topological disks (`bool`).
-CGAL_DISK_SEGMENTATION_ADD_PARAMETER(require_disk_patches_t, require_disk_patches)
 /// \ingroup PkgDiskSegmentationRef
 /// Largest area-weighted mean \f$ |\log(s_1 s_2)| \f$ of a chart (`double`, see `Distortion_bound`).
 CGAL_DISK_SEGMENTATION_ADD_PARAMETER(max_area_distortion_t, max_area_distortion)
@@ -261,6 +255,16 @@ CGAL_DISK_SEGMENTATION_ADD_PARAMETER(face_material_map_t, face_material_map)
 /// one chart where both charts stay disks (`ReadablePropertyMap` from faces to an integral id; see `uv_atlas()`).
 CGAL_DISK_SEGMENTATION_ADD_PARAMETER(face_polygon_map_t, face_polygon_map)
 /// \endcond
+
+// Parameters for the package's tests and benchmarks, not part of its
+// interface (they may change without notice): the face used as the first
+// farthest-point seed of its component, and whether parameterize_patches()
+// refuses patches that are not topological disks (`false` parameterizes
+// them anyway, as a baseline that ignores topology).
+namespace testing {
+CGAL_DISK_SEGMENTATION_ADD_PARAMETER(first_seed_t, first_seed)
+CGAL_DISK_SEGMENTATION_ADD_PARAMETER(require_disk_patches_t, require_disk_patches)
+} // namespace testing
 #undef CGAL_DISK_SEGMENTATION_ADD_PARAMETER
 
 } // namespace parameters

@@ -44,7 +44,7 @@ namespace Disk_segmentation {
 ///        where `P` is the returned value, numbered in the order of each
 ///        patch's first face in the package's face order (see \ref DS_FaceOrder)
 /// @param np an optional sequence of \ref PkgDiskSegmentationNamedParameters "Named Parameters":
-///        all those of the three functions (`number_of_seeds`, `first_seed`,
+///        all those of the three functions (`number_of_seeds`,
 ///        `random_seed`, `seeds_output_iterator`, `number_of_subsamples`,
 ///        `merge_threshold`, `merge_tree`, `smooth_borders`, `vertex_point_map`, `geom_traits`,
 ///        `face_index_map`, `vertex_index_map`), and `progress_callback`, called with

@@ -55,13 +55,8 @@ namespace Disk_segmentation {
 ///     \cgalParamDefault{`10`}
 ///     \cgalParamExtra{must be at least 1}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{first_seed}
-///     \cgalParamDescription{the first seed of its connected component}
-///     \cgalParamType{`boost::graph_traits<TriangleMesh>::%face_descriptor`}
-///     \cgalParamDefault{in every component, the face farthest from the component's first face in the package's face order (see \ref DS_FaceOrder)}
-///   \cgalParamNEnd
 ///   \cgalParamNBegin{random_seed}
-///     \cgalParamDescription{when given, the first seed of every component (but the one of `first_seed`) is drawn at random with this seed}
+///     \cgalParamDescription{when given, the first seed of every component is drawn at random with this seed; without it, the first seed of every component is the face farthest from the component's first face in the package's face order (see \ref DS_FaceOrder)}
 ///     \cgalParamType{`unsigned int`}
 ///     \cgalParamDefault{no randomness}
 ///   \cgalParamNEnd
