@@ -5,6 +5,7 @@
 #define CGAL_DISK_SEGMENTATION_INTERNAL_CHART_SELECTION_CHART_MERGING_H
 
 #include <CGAL/Disk_segmentation/internal/Chart_selection/Chart_choice.h>
+#include <CGAL/Disk_segmentation/internal/Parameters/Parameterization_settings.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Chart_distortion.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Chart_parameterization.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Chart_warm_start.h>
@@ -109,9 +110,6 @@ void keep_least_excess_growth(const std::vector<std::pair<std::size_t, std::size
     tried.erase(Tried(a, version[a], b, version[b]));
   }
 }
-
-// No chart budget: merge_kept_charts() merges only unions that meet the bound.
-constexpr std::size_t no_chart_budget = std::size_t(-1);
 
 // The faces of two charts, sorted.
 inline std::vector<Index> union_faces(const std::vector<Index>& fa, const std::vector<Index>& fb)

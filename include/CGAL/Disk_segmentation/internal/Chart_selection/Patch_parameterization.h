@@ -238,18 +238,11 @@ void report_charts(const Indexed_triangle_mesh& m, const Patch_partition& patche
                    const std::vector<Chart_outcome>& outcomes, Parameterization_method method,
                    const ForEach& for_each, Parameterization_report& report)
 {
-  {
-    std::vector<char> whole(patches.size(), 0);
-    for(const Chart& c : charts)
-      if(patches.is_whole_patch(c))
-        whole[patches.ids[c.faces.front()]] = 1;
-    for(std::size_t p = 0; p < patches.size(); ++p)
-      report.number_of_split_patches += whole[p] ? 0 : 1;
-  }
   std::vector<Chart_distortion> distortion(charts.size());
   for_each_largest_first(for_each, charts.size(), [&](std::size_t p) { return charts[p].faces.size(); },
                          [&](std::size_t p) { distortion[p] = chart_distortion(m, charts[p]); });
   report.charts.resize(charts.size());
+  std::vector<char> patch_is_one_chart(patches.size(), 0);
   for(std::size_t p = 0; p < charts.size(); ++p)
   {
     Chart_report& r = report.charts[p];
@@ -259,6 +252,8 @@ void report_charts(const Indexed_triangle_mesh& m, const Patch_partition& patche
     r.used = outcomes[p].used;
     r.fallback = outcomes[p].fallback;
     r.split = !patches.is_whole_patch(charts[p]);
+    if(!r.split)
+      patch_is_one_chart[patches.ids[charts[p].faces.front()]] = 1;
     r.valid = outcomes[p].valid;
     r.method_error = outcomes[p].method_error;
     r.problem = outcomes[p].problem;
@@ -273,6 +268,8 @@ void report_charts(const Indexed_triangle_mesh& m, const Patch_partition& patche
     report.number_of_invalid_charts += r.valid ? 0 : 1;
     report.number_of_method_errors += r.method_error ? 1 : 0;
   }
+  for(char one_chart : patch_is_one_chart)
+    report.number_of_split_patches += one_chart ? 0 : 1;
 }
 
 // Writes the chart id of every face and the UVs of its corners, on one

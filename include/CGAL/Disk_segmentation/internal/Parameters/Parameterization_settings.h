@@ -10,7 +10,6 @@
 #include <CGAL/Disk_segmentation/Input_error.h>
 #include <CGAL/Disk_segmentation/Parameterization_method.h>
 #include <CGAL/Disk_segmentation/default_values.h>
-#include <CGAL/Disk_segmentation/internal/Chart_selection/Chart_merging.h>
 #include <CGAL/Disk_segmentation/internal/Parameters/Parameter_checks.h>
 #include <CGAL/Disk_segmentation/parameters.h>
 
@@ -19,6 +18,9 @@
 namespace CGAL {
 namespace Disk_segmentation {
 namespace internal {
+
+// No chart budget: merge_kept_charts() merges only unions that meet the bound.
+constexpr std::size_t no_chart_budget = std::size_t(-1);
 
 struct Parameterization_settings
 {
