@@ -154,6 +154,8 @@ std::string method_title(DS::Parameterization_method m)
       return "`mvc`: mean value coordinates, border on a circle (not in the paper)";
     case DS::Parameterization_method::TUTTE:
       return "`tutte`: Tutte's barycentric map, border on a circle (not in the paper)";
+    case DS::Parameterization_method::CUSTOM:
+      return "`custom`: the caller's parameterizer object";
   }
   return DS::to_string(m);
 }

@@ -6,7 +6,14 @@
 // conformal map. SMP gives one UV per vertex of the patch; a vertex on the
 // border between two patches has a UV in each, so the atlas is stored per
 // corner (halfedge), as uv_atlas() does.
+//
+// The same SMP class can also be handed to parameterize_patches() (named
+// parameter `parameterizer`, over the package's DS::Chart_mesh): the package
+// then runs it on a copy of every patch, in parallel, checks each chart,
+// redoes a chart it folds with an injective method, and splits charts over
+// the distortion bound.
 
+#include <CGAL/Disk_segmentation/parameterize_patches.h>
 #include <CGAL/Disk_segmentation/patch_faces.h>
 #include <CGAL/Disk_segmentation/segment_into_disks.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -67,5 +74,15 @@ int main(int argc, char** argv)
     }
   }
   std::cout << faces_of.size() << " patches parameterized by SMP, " << flipped << " flipped triangles\n";
-  return flipped == 0 ? 0 : 1;
+
+  // The same parameterizer, run by the package on every patch.
+  auto chart = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:chart", 0).first;
+  for(Mesh::Face_index f : faces(mesh))
+    chart[f] = patch[f];
+  const DS::Parameterization_report report = DS::parameterize_patches(
+    mesh, chart, uv, DS::parameters::parameterizer(SMP::Discrete_conformal_map_parameterizer_3<DS::Chart_mesh>()));
+  std::cout << report.charts.size() << " charts from parameterize_patches() with SMP's conformal map, "
+            << report.number_of_fallbacks << " redone by a fallback, " << report.number_of_invalid_charts
+            << " invalid\n";
+  return (flipped == 0 && report.number_of_invalid_charts == 0) ? 0 : 1;
 }

@@ -16,6 +16,7 @@
 #include <CGAL/Disk_segmentation/regular_polygon_threshold.h>
 #include <CGAL/Disk_segmentation/merge_disk_regions.h>
 #include <CGAL/Disk_segmentation/segment_into_disks.h>
+#include <CGAL/Disk_segmentation/Chart_parameterizer.h>
 #include <CGAL/Disk_segmentation/Parameterization_method.h>
 #include <CGAL/Disk_segmentation/Distortion_bound.h>
 #include <CGAL/Disk_segmentation/Parameterization_report.h>

@@ -17,6 +17,11 @@
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Random.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/Eigen_solver_traits.h>
+#include <CGAL/Eigen_sparse_matrix.h>
+#include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_authalic_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
@@ -30,7 +35,9 @@
 #include <iterator>
 #include <limits>
 #include <map>
+#include <memory>
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -800,6 +807,217 @@ TEST(Atlas, SameResultForAnyNumberOfThreads)
   EXPECT_EQ(differences, 0u);
 }
 
+namespace {
+
+namespace SMP = CGAL::Surface_mesh_parameterization;
+
+// A parameterizer of the user's, as SMP's concept Parameterizer_3 asks:
+// SMP's discrete authalic map (a method the package has no name for),
+// counting its calls, and the most of them running at once, in counters
+// its copies share.
+struct Counted_authalic_parameterizer
+{
+  typedef DS::Chart_mesh Triangle_mesh;
+  std::shared_ptr<std::atomic<std::size_t> > calls = std::make_shared<std::atomic<std::size_t> >(0);
+  std::shared_ptr<std::atomic<int> > running = std::make_shared<std::atomic<int> >(0);
+  std::shared_ptr<std::atomic<int> > most_running = std::make_shared<std::atomic<int> >(0);
+
+  template <typename VertexUVMap, typename VertexIndexMap, typename VertexParameterizedMap>
+  SMP::Error_code parameterize(DS::Chart_mesh& mesh, DS::Chart_mesh::Halfedge_index border, VertexUVMap uv,
+                               VertexIndexMap index, VertexParameterizedMap parameterized)
+  {
+    ++*calls;
+    const int now = ++*running;
+    for(int most = most_running->load(); now > most && !most_running->compare_exchange_weak(most, now);)
+    {}
+    struct Leave
+    {
+      std::atomic<int>& running;
+      ~Leave() { --running; }
+    } leave{ *running };
+    // A direct solver: SMP's default iterative one took seconds here.
+    typedef CGAL::Eigen_solver_traits<
+      Eigen::SparseLU<CGAL::Eigen_sparse_matrix<double>::EigenType, Eigen::COLAMDOrdering<int> > > Direct;
+    SMP::Discrete_authalic_parameterizer_3<DS::Chart_mesh, SMP::Circular_border_arc_length_parameterizer_3<DS::Chart_mesh>,
+                                           Direct> authalic;
+    return authalic.parameterize(mesh, border, uv, index, parameterized);
+  }
+};
+
+// One that adds a vertex to the chart it is given.
+struct Mesh_changing_parameterizer
+{
+  template <typename VertexUVMap, typename VertexIndexMap, typename VertexParameterizedMap>
+  SMP::Error_code parameterize(DS::Chart_mesh& mesh, DS::Chart_mesh::Halfedge_index, VertexUVMap, VertexIndexMap,
+                               VertexParameterizedMap)
+  {
+    mesh.add_vertex(DS::Chart_mesh::Point(0, 0, 0));
+    return SMP::OK;
+  }
+};
+
+// One whose solver never succeeds.
+struct Failing_parameterizer
+{
+  template <typename VertexUVMap, typename VertexIndexMap, typename VertexParameterizedMap>
+  SMP::Error_code parameterize(DS::Chart_mesh&, DS::Chart_mesh::Halfedge_index, VertexUVMap, VertexIndexMap,
+                               VertexParameterizedMap)
+  {
+    return SMP::ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+  }
+};
+
+std::size_t differing_uvs(const Mesh& tm, const Atlas& a, const Atlas& b)
+{
+  std::size_t differences = 0;
+  for(Mesh::Face_index f : tm.faces())
+    differences += a.patch[f] != b.patch[f] ? 1 : 0;
+  for(Mesh::Halfedge_index h : tm.halfedges())
+    if(!tm.is_border(h) && a.uv[h] != b.uv[h])
+      ++differences;
+  return differences;
+}
+
+} // namespace
+
+TEST(Parameterizer, AnSmpObjectOrFactoryGivesTheAtlasOfTheBuiltInMethodOfTheSameClass)
+{
+  typedef SMP::LSCM_parameterizer_3<DS::Chart_mesh> Lscm;
+  Mesh tm = load("elephant.off");
+  Mesh object_mesh = tm, factory_mesh = tm;
+  const Atlas by_name =
+    make_atlas(tm, DS::parameters::parameterization_method(DS::Parameterization_method::LSCM).number_of_threads(2u));
+  const Atlas by_object = make_atlas(object_mesh, DS::parameters::parameterizer(Lscm()).number_of_threads(2u));
+  const Atlas by_factory =
+    make_atlas(factory_mesh, DS::parameters::parameterizer([] { return Lscm(); }).number_of_threads(2u));
+  expect_valid_atlas(object_mesh, by_object);
+  expect_valid_atlas(factory_mesh, by_factory);
+  EXPECT_EQ(differing_uvs(tm, by_name, by_object), 0u);
+  EXPECT_EQ(differing_uvs(tm, by_name, by_factory), 0u);
+  ASSERT_EQ(by_object.report.parameterization.charts.size(), by_name.report.parameterization.charts.size());
+  for(std::size_t i = 0; i < by_object.report.parameterization.charts.size(); ++i)
+  {
+    const DS::Chart_report& named = by_name.report.parameterization.charts[i];
+    const DS::Chart_report& object = by_object.report.parameterization.charts[i];
+    EXPECT_EQ(named.requested, DS::Parameterization_method::LSCM);
+    EXPECT_EQ(object.requested, DS::Parameterization_method::CUSTOM);
+    EXPECT_EQ(object.fallback, named.fallback);
+    EXPECT_EQ(object.used, named.fallback ? named.used : DS::Parameterization_method::CUSTOM);
+  }
+}
+
+TEST(Parameterizer, AMethodOutsideTheEnumerationRunsOnEveryChartOnAnyNumberOfThreads)
+{
+  Mesh tm = load("elephant.off");
+  Mesh two_threads = tm, conformal_mesh = tm;
+  Counted_authalic_parameterizer authalic;
+  // The paper's charts (no bound): under the default angle bound, an
+  // area-preserving map splits the patches down to many small charts.
+  const auto paper = DS::parameters::distortion_bound(DS::Distortion_bound::unbounded());
+  const Atlas one = make_atlas(tm, paper.parameterizer(authalic).number_of_threads(1u));
+  expect_valid_atlas(tm, one);
+  std::size_t solved = 0;
+  for(const DS::Chart_report& c : one.report.parameterization.charts)
+  {
+    EXPECT_EQ(c.requested, DS::Parameterization_method::CUSTOM);
+    if(!c.fallback)
+    {
+      EXPECT_EQ(c.used, DS::Parameterization_method::CUSTOM);
+      EXPECT_TRUE(c.valid);
+    }
+    solved += (c.used == DS::Parameterization_method::CUSTOM && c.faces > 1) ? 1 : 0;
+  }
+  ASSERT_GT(solved, 10u);
+  // Every kept chart of two faces or more was solved by it, among the
+  // candidates the choice of charts tried.
+  EXPECT_GE(authalic.calls->load(), solved);
+
+  // Its copies take turns, and two threads give the same atlas.
+  const std::size_t calls_on_one_thread = authalic.calls->exchange(0);
+  const Atlas two = make_atlas(two_threads, paper.parameterizer(authalic).number_of_threads(2u));
+  EXPECT_EQ(differing_uvs(tm, one, two), 0u);
+  EXPECT_EQ(authalic.calls->load(), calls_on_one_thread);
+  EXPECT_EQ(authalic.most_running->load(), 1);
+
+  // And it is not a built-in method under another name.
+  const Atlas conformal =
+    make_atlas(conformal_mesh, paper.parameterization_method(DS::Parameterization_method::DISCRETE_CONFORMAL));
+  EXPECT_GT(differing_uvs(tm, one, conformal), 0u);
+}
+
+TEST(Parameterizer, AFailingOrThrowingParameterizerGetsTheFallbacks)
+{
+  Mesh tm = make(TS::disk(6, 16));
+  Patch_map patch = tm.add_property_map<Mesh::Face_index, std::size_t>("f:patch", 0).first;
+  UV_map uv = tm.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:uv", K::Point_2(0, 0)).first;
+  auto throwing = []() -> Failing_parameterizer { throw std::runtime_error("no parameterizer today"); };
+  // SMP's own message for the code (CGAL 5.5's list of messages is one off).
+  const std::string failed = SMP::get_error_message(SMP::ERROR_CANNOT_SOLVE_LINEAR_SYSTEM);
+  for(const std::string expected : { failed, std::string("no parameterizer today"),
+                                     std::string("the parameterizer changed the chart's mesh") })
+  {
+    SCOPED_TRACE(expected);
+    for(Mesh::Face_index f : tm.faces())
+      patch[f] = 0;
+    const auto np = DS::parameters::distortion_bound(DS::Distortion_bound::unbounded()).merge_charts(false);
+    const DS::Parameterization_report with =
+      expected == failed ? DS::parameterize_patches(tm, patch, uv, np.parameterizer(Failing_parameterizer()))
+      : expected.find("today") != std::string::npos
+        ? DS::parameterize_patches(tm, patch, uv, np.parameterizer(throwing))
+        : DS::parameterize_patches(tm, patch, uv, np.parameterizer(Mesh_changing_parameterizer()));
+    ASSERT_EQ(with.charts.size(), 1u);
+    EXPECT_TRUE(with.charts[0].valid);
+    EXPECT_TRUE(with.charts[0].fallback);
+    EXPECT_TRUE(with.charts[0].method_error);
+    EXPECT_EQ(with.charts[0].requested, DS::Parameterization_method::CUSTOM);
+    EXPECT_EQ(with.charts[0].used, DS::Parameterization_method::MEAN_VALUE);
+    EXPECT_NE(with.charts[0].problem.find(expected), std::string::npos) << with.charts[0].problem;
+    DS::pack_patches(tm, patch, uv);
+    const TS::Atlas_report atlas = TS::check_atlas(tm, patch, uv, 512);
+    EXPECT_TRUE(atlas.ok()) << atlas.summary();
+  }
+  for(Mesh::Face_index f : tm.faces())
+    patch[f] = 0;
+  const DS::Parameterization_report without = DS::parameterize_patches(
+    tm, patch, uv, DS::parameters::parameterizer(Failing_parameterizer()).use_fallback(false)
+                     .distortion_bound(DS::Distortion_bound::unbounded()).merge_charts(false));
+  std::size_t solved = 0;
+  for(const DS::Chart_report& c : without.charts)
+  {
+    solved += c.faces > 1 ? 1 : 0;
+    EXPECT_FALSE(c.fallback);
+    if(c.faces > 1)
+    {
+      EXPECT_EQ(c.used, DS::Parameterization_method::CUSTOM);
+      EXPECT_FALSE(c.valid);
+    }
+  }
+  EXPECT_GT(solved, 0u);
+  EXPECT_EQ(without.number_of_fallbacks, 0u);
+}
+
+TEST(Parameterizer, CustomIsNotAMethodOneCanAskForByName)
+{
+  Mesh tm = make(TS::disk(4, 12));
+  Patch_map patch = tm.add_property_map<Mesh::Face_index, std::size_t>("f:patch", 0).first;
+  UV_map uv = tm.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:uv", K::Point_2(7, 7)).first;
+  try
+  {
+    DS::parameterize_patches(tm, patch, uv, DS::parameters::parameterization_method(DS::Parameterization_method::CUSTOM));
+    ADD_FAILURE() << "CUSTOM was accepted without a parameterizer";
+  }
+  catch(const DS::Input_error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("parameterizer"), std::string::npos) << e.what();
+  }
+  for(Mesh::Halfedge_index h : tm.halfedges())
+    ASSERT_EQ(uv[h], K::Point_2(7, 7));
+  EXPECT_THROW(DS::parameterization_method_from_string("custom"), DS::Input_error);
+  EXPECT_EQ(DS::to_string(DS::Parameterization_method::CUSTOM), "custom");
+  for(DS::Parameterization_method m : TS::all_parameterization_methods)
+    EXPECT_EQ(DS::parameterization_method_from_string(DS::to_string(m)), m);
+}
+
 TEST(Atlas, EveryIndexRunsOnceOnAnyNumberOfThreadsLargestFirst)
 {
   // Sizes with ties: the order must be by decreasing size, ties by index,
@@ -987,7 +1205,8 @@ TEST(Atlas, SplittingAChartGivesValidDiskPieces)
   std::vector<DS::internal::Chart_outcome> outcomes;
   std::vector<std::uint64_t> rejected;
   const DS::internal::Split_rule rule{ m, DS::Distortion_bound(), DS::default_max_chart_faces, true };
-  const DS::internal::Chart_choice<DS::internal::Split_rule> choice(m, DS::Parameterization_method::ARAP, true, rule);
+  const DS::internal::Chart_choice<DS::internal::Split_rule> choice(
+    m, DS::internal::built_in_chart_method(DS::Parameterization_method::ARAP), true, rule);
   DS::internal::split_and_parameterize(choice, splitter, all, pieces, outcomes, rejected);
   ASSERT_GE(pieces.size(), 2u);
   std::vector<int> covered(m.number_of_faces(), 0);
@@ -2138,7 +2357,9 @@ TEST(Atlas, TwoChartMapsGlueIntoTheMapOfTheirUnion)
   const std::vector<std::array<double, 2> > glued = DS::internal::glue_chart_maps(a, b, u);
   ASSERT_EQ(glued.size(), u.vertices.size());
   EXPECT_EQ(similarity_problem(p.m, u, glued, 1e-9), "");
-  ASSERT_TRUE(DS::internal::arap_from_start(p.m, u, glued));
+  ASSERT_EQ(DS::internal::built_in_chart_method(DS::Parameterization_method::ARAP).parameterize_from_map(p.m, u, glued,
+                                                                                                        nullptr),
+            "");
   EXPECT_EQ(similarity_problem(p.m, u, u.uv, 1e-6), "");
 
   // Charts that share no vertex have no glued map.

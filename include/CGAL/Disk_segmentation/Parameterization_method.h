@@ -43,12 +43,16 @@ enum class Parameterization_method
   /// Mean value coordinates, border fixed on a circle: injective by construction.
   MEAN_VALUE,
   /// Tutte's barycentric map, border fixed on a circle: injective by construction.
-  TUTTE
+  TUTTE,
+  /// The user's parameterizer, given with the named parameter
+  /// `parameterizer` (see `Chart_mesh`). Reports name it; it is never
+  /// requested by value: `parameterization_method(CUSTOM)` throws `Input_error`.
+  CUSTOM
 };
 
 /// \ingroup PkgDiskSegmentationRef
 /// The short name of a method, as the command-line tool spells it:
-/// `conformal`, `lscm`, `arap`, `mvc`, `tutte`. Constant time and memory.
+/// `conformal`, `lscm`, `arap`, `mvc`, `tutte` (and `custom`). Constant time and memory.
 inline std::string to_string(Parameterization_method m)
 {
   switch(m)
@@ -58,20 +62,21 @@ inline std::string to_string(Parameterization_method m)
     case Parameterization_method::ARAP: return "arap";
     case Parameterization_method::MEAN_VALUE: return "mvc";
     case Parameterization_method::TUTTE: return "tutte";
+    case Parameterization_method::CUSTOM: return "custom";
   }
   return "unknown";
 }
 
 /// \ingroup PkgDiskSegmentationRef
-/// The method named `name` (see `to_string()`); throws `Input_error` for an unknown name.
-/// Time and memory linear in the length of `name`.
+/// The built-in method named `name` (see `to_string()`); throws
+/// `Input_error` for an unknown name and for `custom`, which only a
+/// parameterizer object gives. Time and memory linear in the length of `name`.
 inline Parameterization_method parameterization_method_from_string(const std::string& name)
 {
-  for(Parameterization_method m : { Parameterization_method::DISCRETE_CONFORMAL, Parameterization_method::LSCM,
-                                    Parameterization_method::ARAP, Parameterization_method::MEAN_VALUE,
-                                    Parameterization_method::TUTTE })
-    if(to_string(m) == name)
-      return m;
+  // The built-in methods are the enumerators before CUSTOM.
+  for(int i = 0; i < int(Parameterization_method::CUSTOM); ++i)
+    if(to_string(Parameterization_method(i)) == name)
+      return Parameterization_method(i);
   throw Input_error("unknown parameterization method '" + name + "' (expected conformal, lscm, arap, mvc or tutte)");
 }
 

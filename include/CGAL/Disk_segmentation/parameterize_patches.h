@@ -8,6 +8,7 @@
 
 #include <CGAL/Disk_segmentation/Distortion_bound.h>
 #include <CGAL/Disk_segmentation/Merge_tree.h>
+#include <CGAL/Disk_segmentation/Chart_parameterizer.h>
 #include <CGAL/Disk_segmentation/Parameterization_method.h>
 #include <CGAL/Disk_segmentation/Parameterization_report.h>
 #include <CGAL/Disk_segmentation/internal/Chart_selection/Patch_parameterization.h>
@@ -85,6 +86,14 @@ namespace Disk_segmentation {
 ///     \cgalParamDescription{the method of every chart}
 ///     \cgalParamType{`Parameterization_method`}
 ///     \cgalParamDefault{`default_parameterization_method` (ARAP)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{parameterizer}
+///     \cgalParamDescription{the user's parameterizer of every chart, instead of a built-in method
+///       (not together with `parameterization_method`); it runs on a copy of each chart, and an
+///       invalid result gets the fallbacks like a built-in method's; reports name it `CUSTOM`}
+///     \cgalParamType{a model of SMP's `Parameterizer_3` over `Chart_mesh`, or a callable with no
+///       argument returning one (see `Chart_mesh`)}
+///     \cgalParamDefault{none: `parameterization_method` decides}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{use_fallback}
 ///     \cgalParamDescription{whether invalid charts are redone (see above); when `false`, they are

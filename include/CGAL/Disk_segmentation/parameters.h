@@ -31,6 +31,7 @@ enum merge_threshold_t { merge_threshold };
 enum first_seed_t { first_seed };
 enum seeds_output_iterator_t { seeds_output_iterator };
 enum parameterization_method_t { parameterization_method };
+enum parameterizer_t { parameterizer };
 enum use_fallback_t { use_fallback };
 enum packing_method_t { packing_method };
 enum texture_resolution_t { texture_resolution };
@@ -99,6 +100,7 @@ struct Named_function_parameters
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(first_seed_t, first_seed)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(seeds_output_iterator_t, seeds_output_iterator)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(parameterization_method_t, parameterization_method)
+  CGAL_DISK_SEGMENTATION_ADD_PARAMETER(parameterizer_t, parameterizer)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(use_fallback_t, use_fallback)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(packing_method_t, packing_method)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(texture_resolution_t, texture_resolution)
@@ -172,6 +174,10 @@ CGAL_DISK_SEGMENTATION_ADD_PARAMETER(seeds_output_iterator_t, seeds_output_itera
 /// \ingroup PkgDiskSegmentationRef
 /// Parameterization method of every chart (`Parameterization_method`).
 CGAL_DISK_SEGMENTATION_ADD_PARAMETER(parameterization_method_t, parameterization_method)
+/// \ingroup PkgDiskSegmentationRef
+/// The user's parameterizer of every chart, instead of a built-in method: a
+/// model of SMP's `Parameterizer_3` over `Chart_mesh`, or a factory of one.
+CGAL_DISK_SEGMENTATION_ADD_PARAMETER(parameterizer_t, parameterizer)
 /// \ingroup PkgDiskSegmentationRef
 /// Whether an invalid chart is redone with an injective method (`bool`).
 CGAL_DISK_SEGMENTATION_ADD_PARAMETER(use_fallback_t, use_fallback)

@@ -6,8 +6,8 @@
 
 #include <CGAL/disable_warnings.h>
 
-#include <CGAL/Disk_segmentation/Parameterization_method.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Indexed_triangle_mesh.h>
+#include <CGAL/Disk_segmentation/internal/Parameterization/Chart_methods.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Chart_parameterization.h>
 
 namespace CGAL {
@@ -23,12 +23,12 @@ template <typename Rule>
 struct Chart_choice
 {
   const Indexed_triangle_mesh& mesh;
-  Parameterization_method method;
+  const Chart_method& method;
   bool use_fallback;
   const Rule& needs_split;
   Arap_early_look early_look;
 
-  Chart_choice(const Indexed_triangle_mesh& m, Parameterization_method requested, bool fallback, const Rule& rule)
+  Chart_choice(const Indexed_triangle_mesh& m, const Chart_method& requested, bool fallback, const Rule& rule)
     : mesh(m), method(requested), use_fallback(fallback), needs_split(rule), early_look(rule.early_look())
   {}
 };

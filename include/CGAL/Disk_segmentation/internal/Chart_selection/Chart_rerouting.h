@@ -8,6 +8,7 @@
 #include <CGAL/Disk_segmentation/internal/Chart_selection/Border_rerouting.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Chart_distortion.h>
 #include <CGAL/Disk_segmentation/internal/Chart_selection/Chart_merging.h>
+#include <CGAL/Disk_segmentation/internal/Parameterization/Chart_method_chain.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Chart_parameterization.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Region_topology.h>
 #include <CGAL/Disk_segmentation/internal/Execution/parallel.h>

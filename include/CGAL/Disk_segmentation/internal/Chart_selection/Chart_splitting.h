@@ -15,6 +15,7 @@
 #include <CGAL/Disk_segmentation/internal/Mesh/Region_topology.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Chart_convexity.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Chart_distortion.h>
+#include <CGAL/Disk_segmentation/internal/Parameterization/Chart_method_chain.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Chart_parameterization.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Chart_restriction.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Chart_warm_start.h>

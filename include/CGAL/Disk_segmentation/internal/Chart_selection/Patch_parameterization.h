@@ -325,7 +325,7 @@ Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, con
     curvature.reset(new Interior_curvature(m));
   const Split_rule needs_split{ m, settings.bound, settings.max_chart_faces, settings.use_fallback,
                                 settings.smooth_borders ? &smoother : nullptr, curvature.get(), m.total_common_area() };
-  const Chart_choice<Split_rule> choice(m, settings.method, settings.use_fallback, needs_split);
+  const Chart_choice<Split_rule> choice(m, *settings.method, settings.use_fallback, needs_split);
 
   std::unordered_set<std::uint64_t> rejected_regions;
   std::vector<Kept_chart> kept = descend_to_charts(choice, patches, tree, threads, progress, rejected_regions);
@@ -346,7 +346,7 @@ Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, con
   std::vector<Chart> charts;
   std::vector<Chart_outcome> outcomes;
   number_charts(kept, patches.size(), charts, outcomes);
-  report_charts(m, patches, charts, outcomes, settings.method, for_each, report);
+  report_charts(m, patches, charts, outcomes, settings.method->id(), for_each, report);
   write_chart_maps(tm, input, charts, face_patch_map, uv_map);
   return report;
 }

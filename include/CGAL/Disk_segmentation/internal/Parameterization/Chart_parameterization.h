@@ -6,7 +6,7 @@
 
 #include <CGAL/disable_warnings.h>
 
-#include <CGAL/Disk_segmentation/Parameterization_method.h>
+#include <CGAL/Disk_segmentation/Chart_parameterizer.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Indexed_triangle_mesh.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Free_border_lscm.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Local_global_arap.h>
@@ -16,10 +16,8 @@
 #include <CGAL/Eigen_sparse_matrix.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_2_algorithms.h>
-#include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/Barycentric_mapping_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
-#include <CGAL/Surface_mesh_parameterization/Discrete_conformal_map_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
 #include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Mean_value_coordinates_parameterizer_3.h>
@@ -285,7 +283,8 @@ inline void keep_winding(const Chart& c, Chart_uv& uv)
 
 inline void keep_winding(Chart& c) { keep_winding(c, c.uv); }
 
-typedef CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> Chart_mesh;
+// The border of the fixed-border methods: a circle, by arc length.
+typedef CGAL::Surface_mesh_parameterization::Circular_border_arc_length_parameterizer_3<Chart_mesh> Circle_border;
 
 // Solver traits for SMP's fixed-border methods: a direct sparse LU instead
 // of the default BiCGSTAB with incomplete LU (measured 20% faster on a
@@ -348,6 +347,13 @@ std::string run_parameterizer(Chart_mesh& mesh, Parameterizer parameterizer,
   {
     mesh.remove_property_map(uv);
     return std::string("parameterizer threw: ") + e.what();
+  }
+  // A user's parameterizer gets the mesh by reference: one that added or
+  // removed vertices would have its UVs read out of place.
+  if(mesh.number_of_vertices() != c.uv.size() || mesh.has_garbage())
+  {
+    mesh.remove_property_map(uv);
+    return "the parameterizer changed the chart's mesh";
   }
   for(Chart_mesh::Vertex_index v : mesh.vertices())
     c.uv[std::size_t(v)] = {{ uv[v].x(), uv[v].y() }};
@@ -554,10 +560,9 @@ inline void lay_out_single_triangle(const Indexed_triangle_mesh& m, Chart& c)
 
 // ARAP once arap_from_lscm() failed: from SMP's LSCM, then from an
 // injective map on a circle, keeping only valid iterates.
-template <typename Circle, typename Direct_solver>
-std::string arap_from_other_starts(const Indexed_triangle_mesh& m, Chart& c, Chart_mesh& mesh,
-                                   Chart_mesh::Halfedge_index border, const std::vector<Index>& border_loop,
-                                   bool& validated, Early_look* look)
+inline std::string arap_from_other_starts(const Indexed_triangle_mesh& m, Chart& c, Chart_mesh& mesh,
+                                          Chart_mesh::Halfedge_index border, const std::vector<Index>& border_loop,
+                                          bool& validated, Early_look* look)
 {
   namespace SMP = CGAL::Surface_mesh_parameterization;
   // Local/global iterations with one factorization (see
@@ -588,10 +593,10 @@ std::string arap_from_other_starts(const Indexed_triangle_mesh& m, Chart& c, Cha
     }
     return problem;
   };
-  if(!valid_start(SMP::Mean_value_coordinates_parameterizer_3<Chart_mesh, Circle, Direct_solver>()).empty())
+  if(!valid_start(SMP::Mean_value_coordinates_parameterizer_3<Chart_mesh, Circle_border, Factor_once_sparse_lu>()).empty())
   {
     const std::string problem =
-      valid_start(SMP::Barycentric_mapping_parameterizer_3<Chart_mesh, Circle, Direct_solver>());
+      valid_start(SMP::Barycentric_mapping_parameterizer_3<Chart_mesh, Circle_border, Factor_once_sparse_lu>());
     if(!problem.empty())
       return "ARAP: no valid initialization (" + problem + ")";
   }
@@ -599,146 +604,6 @@ std::string arap_from_other_starts(const Indexed_triangle_mesh& m, Chart& c, Cha
     return "ARAP: cannot factor the cotangent Laplacian (degenerate triangles)";
   validated = true;
   return std::string();
-}
-
-// Runs one method on the chart; returns an empty string on success, else
-// what went wrong. The UVs are left in `c.uv` in either case; `validated`
-// says whether they were found valid (ARAP checks its result).
-inline std::string parameterize_chart_with(const Indexed_triangle_mesh& m, Chart& c, Parameterization_method method,
-                                           std::vector<Index>& border_loop, bool& validated,
-                                           On_invalid_map on_invalid = On_invalid_map::redo,
-                                           Early_look* look = nullptr)
-{
-  validated = false;
-  namespace SMP = CGAL::Surface_mesh_parameterization;
-  typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_3 Point_3;
-
-  c.uv.assign(c.vertices.size(), {{ 0., 0. }});
-  if(method == Parameterization_method::ARAP && c.triangles.size() > 1)
-  {
-    if(arap_from_lscm(m, c, border_loop, look))
-    {
-      validated = true;
-      return std::string();
-    }
-    if(on_invalid == On_invalid_map::report)
-      return "ARAP: the free-border LSCM start folds or overlaps and the iterations did not repair it";
-  }
-
-  Chart_mesh mesh;
-  mesh.reserve(static_cast<Chart_mesh::size_type>(c.vertices.size()),
-               static_cast<Chart_mesh::size_type>(3 * c.triangles.size()),
-               static_cast<Chart_mesh::size_type>(c.triangles.size()));
-  for(Index v : c.vertices)
-    mesh.add_vertex(Point_3(m.points[v][0], m.points[v][1], m.points[v][2]));
-  for(const auto& t : c.triangles)
-    if(mesh.add_face(Chart_mesh::Vertex_index(t[0]), Chart_mesh::Vertex_index(t[1]), Chart_mesh::Vertex_index(t[2])) ==
-       Chart_mesh::null_face())
-      return "chart is not a manifold disk";
-
-  Chart_mesh::Halfedge_index border;
-  for(Chart_mesh::Halfedge_index h : mesh.halfedges())
-    if(mesh.is_border(h)) { border = h; break; }
-  if(border == Chart_mesh::null_halfedge())
-    return "chart has no border";
-  border_loop.clear();
-  // Ends: add_face keeps the mesh valid, so the border cycle returns to
-  // `border` (at most 3 F halfedges).
-  for(Chart_mesh::Halfedge_index h : CGAL::halfedges_around_face(border, mesh))
-    border_loop.push_back(static_cast<Index>(std::size_t(mesh.target(h))));
-
-  if(c.triangles.size() == 1)
-  {
-    lay_out_single_triangle(m, c);
-    return std::string();
-  }
-
-  // A chart whose vertices all coincide has no flattening; worse, SMP's
-  // LSCM divides by the length of the bounding box to pick its two fixed
-  // vertices, picks none (NaN comparisons) and then writes the UV of a null
-  // vertex, out of bounds.
-  if(m.at_one_point(c.faces))
-    return "degenerate chart (all vertices at one point)";
-
-  typedef SMP::Circular_border_arc_length_parameterizer_3<Chart_mesh> Circle;
-  typedef Factor_once_sparse_lu Direct_solver;
-  switch(method)
-  {
-    case Parameterization_method::DISCRETE_CONFORMAL:
-      return run_parameterizer(mesh, SMP::Discrete_conformal_map_parameterizer_3<Chart_mesh, Circle, Direct_solver>(), border, c);
-    case Parameterization_method::LSCM:
-      return run_parameterizer(mesh, SMP::LSCM_parameterizer_3<Chart_mesh>(), border, c);
-    case Parameterization_method::ARAP:
-      return arap_from_other_starts<Circle, Direct_solver>(m, c, mesh, border, border_loop, validated, look);
-    case Parameterization_method::MEAN_VALUE:
-      return run_parameterizer(mesh, SMP::Mean_value_coordinates_parameterizer_3<Chart_mesh, Circle, Direct_solver>(), border, c);
-    case Parameterization_method::TUTTE:
-      return run_parameterizer(mesh, SMP::Barycentric_mapping_parameterizer_3<Chart_mesh, Circle, Direct_solver>(), border, c);
-  }
-  return "unknown parameterization method";
-}
-
-struct Chart_outcome
-{
-  Parameterization_method used = Parameterization_method::TUTTE;
-  bool fallback = false;  // another method than the requested one was used
-  bool valid = false;
-  // The requested method itself failed (solver error, no border, not a
-  // manifold chart, non-finite UVs), as opposed to returning a map with
-  // flipped triangles or a self-intersecting border.
-  bool method_error = false;
-  std::string problem;    // why the requested method was rejected (empty if it was not)
-};
-
-// The requested method, then, if its chart is invalid and `use_fallback`,
-// mean value coordinates and Tutte's barycentric map on a circle: both are
-// injective by construction for a disk mapped to a convex border (positive
-// weights), so they only fail on numerically degenerate input. With
-// `On_invalid_map::report`, a chart of more than one triangle gets the
-// requested method from its first start only.
-inline Chart_outcome parameterize_chart(const Indexed_triangle_mesh& m, Chart& c,
-                                        Parameterization_method requested, bool use_fallback,
-                                        On_invalid_map on_invalid = On_invalid_map::redo,
-                                        Early_look* look = nullptr)
-{
-  Chart_outcome outcome;
-  std::vector<Index> border_loop;
-  std::vector<Parameterization_method> chain(1, requested);
-  if(c.triangles.size() < 2)
-    on_invalid = On_invalid_map::redo;
-  if(use_fallback && on_invalid == On_invalid_map::redo)
-    for(Parameterization_method fallback : { Parameterization_method::MEAN_VALUE, Parameterization_method::TUTTE })
-      if(fallback != requested)
-        chain.push_back(fallback);
-
-  // The fallback chain: at most three methods (requested, mean value, Tutte).
-  for(std::size_t i = 0; i < chain.size(); ++i)
-  {
-    bool validated = false;
-    std::string problem = parameterize_chart_with(m, c, chain[i], border_loop, validated, on_invalid, look);
-    bool error = !problem.empty();
-    if(problem.empty() && !validated)
-    {
-      keep_winding(c);
-      problem = chart_uv_problem(c, c.uv, border_loop);
-      error = (problem == non_finite_uv);
-    }
-    if(i == 0)
-    {
-      outcome.problem = problem;
-      outcome.method_error = error;
-    }
-    if(problem.empty())
-    {
-      outcome.used = chain[i];
-      outcome.fallback = (i > 0);
-      outcome.valid = true;
-      return outcome;
-    }
-  }
-  outcome.used = chain.back();
-  outcome.fallback = chain.size() > 1;
-  return outcome;
 }
 
 } // namespace internal

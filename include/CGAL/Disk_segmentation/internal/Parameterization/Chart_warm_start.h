@@ -5,8 +5,10 @@
 #define CGAL_DISK_SEGMENTATION_INTERNAL_PARAMETERIZATION_CHART_WARM_START_H
 
 #include <CGAL/Disk_segmentation/Parameterization_method.h>
-#include <CGAL/Disk_segmentation/internal/Parameterization/Chart_parameterization.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Indexed_triangle_mesh.h>
+#include <CGAL/Disk_segmentation/internal/Parameterization/Chart_method_chain.h>
+#include <CGAL/Disk_segmentation/internal/Parameterization/Chart_methods.h>
+#include <CGAL/Disk_segmentation/internal/Parameterization/Chart_parameterization.h>
 
 #include <array>
 #include <cmath>
@@ -19,47 +21,25 @@ namespace CGAL {
 namespace Disk_segmentation {
 namespace internal {
 
-// ARAP on `c` from the map `start` (one UV per local vertex) instead of
-// from LSCM, for the union of two parameterized charts: their maps glued
-// are close to the union's own ARAP optimum. (Not for the pieces of a
-// parameterized chart: from its map restricted to them, local/global
-// iterations converge slowly, 30 iterations to reach the charts an LSCM
-// start gives in 10.) Returns whether `c.uv` is now a valid ARAP map.
-inline bool arap_from_start(const Indexed_triangle_mesh& m, Chart& c, Chart_uv start,
-                            Early_look* look = nullptr)
-{
-  if(c.triangles.size() < 2 || start.size() != c.vertices.size())
-    return false;
-  const std::vector<Index> border = chart_border_loop(c);
-  return !border.empty() && arap_from(c, border, chart_geometry(m, c), std::move(start), look);
-}
-
-// parameterize_chart() for ARAP from a start map when one is given and
-// gives a valid chart. When it does not, the full chain (LSCM start,
-// fallbacks) with On_invalid_map::redo; with On_invalid_map::report the
-// chart is reported invalid at once: a union whose glued maps fold under
-// ARAP is one the merge gives up. Measured on fandisk, 14 such unions were
-// redone from LSCM and none met the bound (0.19 of its 0.70 s).
-inline Chart_outcome parameterize_chart_from(const Indexed_triangle_mesh& m, Chart& c,
-                                             Parameterization_method requested, bool use_fallback,
-                                             const Chart_uv* start, On_invalid_map on_invalid,
+// parameterize_chart() from a start map, for a method that iterates from
+// one, when one is given and gives a valid chart. When it does not, the
+// full chain (the method's own start, fallbacks) with On_invalid_map::redo;
+// with On_invalid_map::report the chart is reported invalid at once: a
+// union whose glued maps fold under ARAP is one the merge gives up.
+// Measured on fandisk, 14 such unions were redone from LSCM and none met
+// the bound (0.19 of its 0.70 s).
+inline Chart_outcome parameterize_chart_from(const Indexed_triangle_mesh& m, Chart& c, const Chart_method& requested,
+                                             bool use_fallback, const Chart_uv* start, On_invalid_map on_invalid,
                                              Early_look* look = nullptr)
 {
-  if(start != nullptr && requested == Parameterization_method::ARAP && c.triangles.size() > 1)
+  if(start != nullptr && requested.starts_from_a_map() && c.triangles.size() > 1)
   {
     Chart_outcome outcome;
-    outcome.used = requested;
-    if(arap_from_start(m, c, *start, look))
-    {
-      outcome.valid = true;
+    outcome.used = requested.id();
+    outcome.problem = requested.parameterize_from_map(m, c, *start, look);
+    outcome.valid = outcome.problem.empty();
+    if(outcome.valid || on_invalid == On_invalid_map::report)
       return outcome;
-    }
-    if(on_invalid == On_invalid_map::report)
-    {
-      outcome.problem = "ARAP: the start glued from the two charts' maps folds or overlaps and the iterations "
-                        "did not repair it";
-      return outcome;
-    }
   }
   return parameterize_chart(m, c, requested, use_fallback, on_invalid, look);
 }

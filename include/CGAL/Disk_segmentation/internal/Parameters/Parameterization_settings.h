@@ -10,10 +10,12 @@
 #include <CGAL/Disk_segmentation/Input_error.h>
 #include <CGAL/Disk_segmentation/Parameterization_method.h>
 #include <CGAL/Disk_segmentation/default_values.h>
+#include <CGAL/Disk_segmentation/internal/Parameterization/Chart_methods.h>
 #include <CGAL/Disk_segmentation/internal/Parameters/Parameter_checks.h>
 #include <CGAL/Disk_segmentation/parameters.h>
 
 #include <cstddef>
+#include <memory>
 
 namespace CGAL {
 namespace Disk_segmentation {
@@ -24,7 +26,8 @@ constexpr std::size_t no_chart_budget = std::size_t(-1);
 
 struct Parameterization_settings
 {
-  Parameterization_method method;
+  // Shared: the settings are copied (uv_atlas() retries without the bound).
+  std::shared_ptr<const Chart_method> method;
   bool use_fallback, require_disks;
   unsigned int threads;
   Distortion_bound bound;
@@ -55,6 +58,28 @@ Distortion_bound distortion_bound_parameters(const NamedParameters& np)
   return b;
 }
 
+// The method of every chart: `parameterizer` or `parameterization_method`.
+template <typename NamedParameters>
+std::shared_ptr<const Chart_method> chart_method_parameter(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::is_default_parameter;
+  constexpr bool object = !is_default_parameter<NamedParameters, Disk_segmentation::internal_np::parameterizer_t>::value;
+  constexpr bool by_value =
+    !is_default_parameter<NamedParameters, Disk_segmentation::internal_np::parameterization_method_t>::value;
+  static_assert(!(object && by_value), "CGAL::Disk_segmentation: give parameterization_method or parameterizer, "
+                                       "not both (parameterization_method names the built-in parameterizers)");
+  if constexpr(object)
+    return user_chart_method(get_parameter(np, Disk_segmentation::internal_np::parameterizer));
+  else
+  {
+    const Chart_method& built_in = built_in_chart_method(choose_parameter(
+      get_parameter(np, Disk_segmentation::internal_np::parameterization_method), default_parameterization_method));
+    return std::shared_ptr<const Chart_method>(&built_in, [](const Chart_method*) {});  // a static object
+  }
+}
+
 // The named parameters of parameterize_patches(), checked.
 template <typename NamedParameters>
 Parameterization_settings parameterization_settings(const NamedParameters& np)
@@ -62,8 +87,7 @@ Parameterization_settings parameterization_settings(const NamedParameters& np)
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   Parameterization_settings s;
-  s.method = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::parameterization_method),
-                              default_parameterization_method);
+  s.method = chart_method_parameter(np);
   s.use_fallback = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::use_fallback), true);
   s.require_disks = choose_parameter(get_parameter(np, Disk_segmentation::internal_np::require_disk_patches), true);
   s.threads = number_of_threads_parameter(np);
