@@ -153,6 +153,7 @@ void parameterization_counters(benchmark::State& state, const Level& d, const DS
   state.counters["charts_per_second"] = benchmark::Counter(charts, benchmark::Counter::kIsIterationInvariantRate);
   state.counters["fallbacks"] = static_cast<double>(r.number_of_fallbacks);
   state.counters["splits"] = static_cast<double>(r.number_of_split_patches);
+  state.counters["solves_per_face"] = static_cast<double>(r.solved_faces) / static_cast<double>(d.faces);
   double weighted = 0;
   std::size_t faces = 0, largest = 0;
   for(const DS::Chart_report& c : r.charts)
@@ -237,6 +238,7 @@ void BM_uv_atlas(benchmark::State& state, int L, unsigned int threads)
   state.counters["charts_per_second"] = benchmark::Counter(charts, benchmark::Counter::kIsIterationInvariantRate);
   state.counters["fallbacks"] = static_cast<double>(report.parameterization.number_of_fallbacks);
   state.counters["splits"] = static_cast<double>(report.parameterization.number_of_split_patches);
+  state.counters["solves_per_face"] = report.solves_per_face();
   state.counters["efficiency"] = report.packing.efficiency;
   state.counters["segment_ms"] = benchmark::Counter(1e3 * segment_seconds, benchmark::Counter::kAvgIterations);
   state.counters["parameterize_ms"] =

@@ -187,6 +187,7 @@ void run_case(const Case_settings& s, const Reporter& report)
   report("split_patches", p.number_of_split_patches);
   report("invalid_charts", p.number_of_invalid_charts);
   report("method_errors", p.number_of_method_errors);
+  report("solves_per_face", static_cast<double>(p.solved_faces) / static_cast<double>(num_faces(mesh)));
   const bool fallback_on = (s.segmentation == "ours" || s.segmentation == "ours-nosplit");
   if(!fallback_on && p.number_of_method_errors > 0)
   {

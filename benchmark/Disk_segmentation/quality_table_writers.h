@@ -46,6 +46,7 @@ const std::vector<std::pair<std::string, std::string> >& csv_columns()
     { "split_patches", "split_patches" },
     { "invalid_charts", "invalid_charts" },
     { "method_errors", "method_errors" },
+    { "solves_per_face", "solves_per_face" },
     { "flipped_faces", "flipped_faces" },
     { "flipped_percent", "flipped_percent" },
     { "degenerate_percent", "degenerate_percent" },

@@ -4,7 +4,8 @@
 For every mesh (OFF or OBJ triangle meshes; folders are searched for them),
 optionally subdivided 1 -> 4 per level, the two tools run in alternating
 order, RUNS times each: `disk_uv` once per thread count (its report's total,
-which excludes reading the file) and Blender's `bpy.ops.uv.smart_project()`
+which excludes reading the file, and its stages: segmentation,
+parameterization, packing; and how many times a face was solved) and Blender's `bpy.ops.uv.smart_project()`
 with its defaults (the call alone, Blender's island packing included, timed
 inside Blender). Prints one Markdown row per mesh and thread count with the
 medians and the ratio disk_uv / Blender, and writes every run to --csv.
@@ -118,10 +119,13 @@ def mesh_files(inputs):
 
 
 def run_disk_uv(tool, obj, threads, report):
+    """(total, segment, parameterize, pack) seconds, peak MB, charts, solves per face."""
     subprocess.run([tool, obj, "-q", "--threads", str(threads), "--report", report], check=True)
     with open(report) as f:
         r = json.load(f)
-    return r["seconds"]["total"], r["peak_rss_mb"], len(r["charts"])
+    t = r["seconds"]
+    stages = (t["total"], t["voronoi"] + t["refine"] + t["merge"], t["parameterization"], t["packing"])
+    return stages, r["peak_rss_mb"], len(r["charts"]), r["parameterization"]["solves_per_face"]
 
 
 def run_blender(blender, driver, obj):
@@ -156,8 +160,9 @@ def main():
         print("Blender not found: disk_uv only", file=sys.stderr)
 
     rows = []
-    print("| mesh | faces | threads | disk_uv s | Blender s | ratio | charts | peak MB | KB per face |")
-    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|")
+    print("| mesh | faces | threads | disk_uv s | segment s | parameterize s | pack s | solves per face | "
+          "Blender s | ratio | charts | peak MB | KB per face |")
+    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
     with tempfile.TemporaryDirectory() as tmp:
         driver = os.path.join(tmp, "driver.py")
         with open(driver, "w") as f:
@@ -174,7 +179,7 @@ def main():
                 obj = os.path.join(tmp, "mesh.obj")
                 write_obj(obj, vertices, faces)
                 ours = {t: [] for t in threads}
-                theirs, memory, charts = [], {}, {}
+                theirs, memory, charts, solves = [], {}, {}, {}
                 for run in range(args.runs):
                     # Alternate which tool goes first, so that neither always
                     # meets a cold or a warm machine.
@@ -182,24 +187,26 @@ def main():
                     for tool in order:
                         if tool == "blender" and blender is not None:
                             theirs.append(run_blender(blender, driver, obj))
-                            rows.append([label, len(faces), "blender", "", run, theirs[-1], "", ""])
+                            rows.append([label, len(faces), "blender", "", run, theirs[-1]] + [""] * 6)
                         elif tool == "disk_uv":
                             for t in threads:
-                                s, mb, n = run_disk_uv(args.disk_uv, obj, t, os.path.join(tmp, "r.json"))
-                                ours[t].append(s)
-                                memory[t], charts[t] = mb, n
-                                rows.append([label, len(faces), "disk_uv", t, run, s, mb, n])
+                                stages, mb, n, spf = run_disk_uv(args.disk_uv, obj, t, os.path.join(tmp, "r.json"))
+                                ours[t].append(stages)
+                                memory[t], charts[t], solves[t] = mb, n, spf
+                                rows.append([label, len(faces), "disk_uv", t, run] + list(stages) + [mb, n, spf])
                 blender_s = statistics.median(theirs) if theirs else float("nan")
                 for t in threads:
-                    s = statistics.median(ours[t])
-                    print("| %s | %d | %d | %.3f | %s | %s | %d | %.0f | %.2f |" % (
-                        label, len(faces), t, s, "%.3f" % blender_s if theirs else "-",
+                    s, segment, parameterize, pack = [statistics.median(r[i] for r in ours[t]) for i in range(4)]
+                    print("| %s | %d | %d | %.3f | %.3f | %.3f | %.3f | %.2f | %s | %s | %d | %.0f | %.2f |" % (
+                        label, len(faces), t, s, segment, parameterize, pack, solves[t],
+                        "%.3f" % blender_s if theirs else "-",
                         "%.2f" % (s / blender_s) if theirs else "-", charts[t], memory[t],
                         memory[t] * 1024 / len(faces)), flush=True)
     if args.csv:
         with open(args.csv, "w", newline="") as f:
             w = csv.writer(f)
-            w.writerow(["mesh", "faces", "tool", "threads", "run", "seconds", "peak_mb", "charts"])
+            w.writerow(["mesh", "faces", "tool", "threads", "run", "seconds", "segment_seconds",
+                        "parameterize_seconds", "pack_seconds", "peak_mb", "charts", "solves_per_face"])
             w.writerows(rows)
 
 

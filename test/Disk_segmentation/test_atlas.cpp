@@ -805,6 +805,9 @@ TEST(Atlas, SameResultForAnyNumberOfThreads)
     if(!tm.is_border(h) && (one.uv[h] != two.uv[h]))
       ++differences;
   EXPECT_EQ(differences, 0u);
+  // The same charts tried, too.
+  EXPECT_EQ(one.report.parameterization.solved_faces, two.report.parameterization.solved_faces);
+  EXPECT_EQ(one.report.parameterization.number_of_solves, two.report.parameterization.number_of_solves);
 }
 
 namespace {
@@ -813,12 +816,13 @@ namespace SMP = CGAL::Surface_mesh_parameterization;
 
 // A parameterizer of the user's, as SMP's concept Parameterizer_3 asks:
 // SMP's discrete authalic map (a method the package has no name for),
-// counting its calls, and the most of them running at once, in counters
-// its copies share.
+// counting its calls, the faces it solved and the most calls running at
+// once, in counters its copies share.
 struct Counted_authalic_parameterizer
 {
   typedef DS::Chart_mesh Triangle_mesh;
   std::shared_ptr<std::atomic<std::size_t> > calls = std::make_shared<std::atomic<std::size_t> >(0);
+  std::shared_ptr<std::atomic<std::size_t> > faces = std::make_shared<std::atomic<std::size_t> >(0);
   std::shared_ptr<std::atomic<int> > running = std::make_shared<std::atomic<int> >(0);
   std::shared_ptr<std::atomic<int> > most_running = std::make_shared<std::atomic<int> >(0);
 
@@ -827,6 +831,7 @@ struct Counted_authalic_parameterizer
                                VertexIndexMap index, VertexParameterizedMap parameterized)
   {
     ++*calls;
+    *faces += mesh.number_of_faces();
     const int now = ++*running;
     for(int most = most_running->load(); now > most && !most_running->compare_exchange_weak(most, now);)
     {}
@@ -943,6 +948,40 @@ TEST(Parameterizer, AMethodOutsideTheEnumerationRunsOnEveryChartOnAnyNumberOfThr
   const Atlas conformal =
     make_atlas(conformal_mesh, paper.parameterization_method(DS::Parameterization_method::DISCRETE_CONFORMAL));
   EXPECT_GT(differing_uvs(tm, one, conformal), 0u);
+}
+
+TEST(SolveCount, EveryRunOfTheMethodIsCountedWithItsFaces)
+{
+  Mesh tm = load("eight.off");
+  Counted_authalic_parameterizer authalic;
+  // Under the default bound, the authalic map's patches are split and the
+  // small charts merged: many tries. No fallback: each try is one run of
+  // the method.
+  const Atlas a = make_atlas(tm, DS::parameters::parameterizer(authalic).use_fallback(false).number_of_threads(2u));
+  const DS::Parameterization_report& p = a.report.parameterization;
+  const std::size_t calls = authalic.calls->load(), faces_solved_by_it = authalic.faces->load();
+  ASSERT_GT(calls, 0u);
+  // The tries it was not called for are single triangles, laid out as they are.
+  EXPECT_GE(p.number_of_solves, calls);
+  EXPECT_EQ(p.solved_faces - faces_solved_by_it, p.number_of_solves - calls);
+  EXPECT_GT(p.solved_faces_in_merges, 0u);
+  // Every face is in some chart solved before the merges and reroutes.
+  EXPECT_GE(p.solved_faces - p.solved_faces_in_merges - p.solved_faces_in_reroutes, tm.number_of_faces());
+  EXPECT_DOUBLE_EQ(a.report.solves_per_face(), double(p.solved_faces) / double(tm.number_of_faces()));
+}
+
+TEST(SolveCount, EachFaceIsSolvedOnceWhenEveryPatchIsKept)
+{
+  Mesh tm = load("elephant.off");
+  // The paper's charts: no bound, no merges, no reroutes.
+  const Atlas a = make_atlas(tm, DS::parameters::distortion_bound(DS::Distortion_bound::unbounded()));
+  const DS::Parameterization_report& p = a.report.parameterization;
+  ASSERT_EQ(p.number_of_fallbacks, 0u);
+  ASSERT_EQ(p.number_of_split_patches, 0u);
+  EXPECT_EQ(p.solved_faces, tm.number_of_faces());
+  EXPECT_EQ(p.number_of_solves, p.charts.size());
+  EXPECT_EQ(p.solved_faces_in_merges + p.solved_faces_in_reroutes, 0u);
+  EXPECT_DOUBLE_EQ(a.report.solves_per_face(), 1.);
 }
 
 TEST(Parameterizer, AFailingOrThrowingParameterizerGetsTheFallbacks)

@@ -40,6 +40,16 @@ grep -q '"charts"' "$work/report.json" && grep -q '"efficiency"' "$work/report.j
 grep -q '"invalid_charts": 0' "$work/report.json" && pass || fail "report says some chart is invalid"
 python3 -c "import json,sys; sys.exit(0 if json.load(open('$work/report.json'))['peak_rss_mb'] > 1 else 1)" \
   && pass || fail "report lacks a plausible peak_rss_mb"
+# The solve count: at least every face once, the per-face ratio its own
+# division, and elephant's merges (ARAP from the glued maps) counted.
+python3 -c "
+import json, sys
+r = json.load(open('$work/report.json'))
+p = r['parameterization']
+ok = p['solved_faces'] >= r['faces'] and abs(p['solves_per_face'] - p['solved_faces'] / r['faces']) < 1e-9 \\
+     and p['solved_faces_in_merges'] + p['solved_faces_in_reroutes'] <= p['solved_faces'] - r['faces'] \\
+     and p['solved_faces_in_merges'] > 0
+sys.exit(0 if ok else 1)" && pass || fail "report's solve count is implausible"
 
 # --- same input, same output
 "$tool" "$data/elephant.off" -n 12 --patch-ids "$work/ids2.txt" > /dev/null 2>&1

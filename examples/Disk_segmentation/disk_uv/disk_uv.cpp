@@ -611,13 +611,14 @@ void print_summary(const Command_line& line, const DS::Atlas_report& report, con
                 input, changes.polygons_triangulated, changes.fan_triangulations, changes.faces_removed,
                 changes.vertices_removed, changes.vertices_added, changes.pinched_vertices_split);
   std::printf("%s: %zu faces -> %zu charts (voronoi %zu, refined %zu), %s, %zu fallbacks, %zu invalid, "
-              "packing %.1f%%; time read %.3f s, segment %.3f s, parameterize %.3f s, pack %.3f s\n",
+              "packing %.1f%%; time read %.3f s, segment %.3f s, parameterize %.3f s (each face solved %.2f "
+              "times), pack %.3f s\n",
               input, report.number_of_faces, report.number_of_charts, report.number_of_voronoi_cells,
               report.number_of_refined_regions, line.options.method.c_str(),
               report.parameterization.number_of_fallbacks, report.parameterization.number_of_invalid_charts,
               100 * report.packing.efficiency, read_seconds,
               report.voronoi_seconds + report.refine_seconds + report.merge_seconds,
-              report.parameterization_seconds, report.packing_seconds);
+              report.parameterization_seconds, report.solves_per_face(), report.packing_seconds);
   if(report.polygons_moved_whole + report.polygons_left_across_charts > 0)
     std::printf("%s: %zu polygons split by the charts moved whole into one of them, %zu left across charts\n",
                 input, report.polygons_moved_whole, report.polygons_left_across_charts);

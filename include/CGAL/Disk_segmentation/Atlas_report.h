@@ -36,6 +36,13 @@ struct Atlas_report
 
   double voronoi_seconds = 0, refine_seconds = 0, merge_seconds = 0;
   double parameterization_seconds = 0, packing_seconds = 0, total_seconds = 0;
+
+  /// How many times a face was solved on average (`Parameterization_report::solved_faces` per
+  /// face of the mesh; 0 without faces).
+  double solves_per_face() const
+  {
+    return number_of_faces == 0 ? 0. : double(parameterization.solved_faces) / double(number_of_faces);
+  }
 };
 
 } // namespace Disk_segmentation

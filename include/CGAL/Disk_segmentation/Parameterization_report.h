@@ -72,6 +72,18 @@ struct Parameterization_report
   /// `false` when the charts are more than `max_number_of_charts`: no two adjacent charts have a
   /// union that is a disk with a valid map (and at most `max_chart_faces` faces).
   bool chart_budget_met = true;
+  /// What choosing the charts cost: each time a method ran on a chart (a
+  /// patch or a piece of one, a union a merge tried, a chart a rerouted
+  /// border changed, a fallback; the tries that were rejected too), that
+  /// chart's faces. Divided by the number of faces of the mesh: how many
+  /// times a face was solved (1 when every patch is solved once and kept).
+  std::size_t solved_faces = 0;
+  /// Of `solved_faces`, those of the unions that merges tried (`merge_charts`, the chart budget).
+  std::size_t solved_faces_in_merges = 0;
+  /// Of `solved_faces`, those of the charts that rerouted borders changed (`straighten_borders`).
+  std::size_t solved_faces_in_reroutes = 0;
+  /// How many times a method ran on a chart (the charts counted in `solved_faces`).
+  std::size_t number_of_solves = 0;
 };
 
 } // namespace Disk_segmentation

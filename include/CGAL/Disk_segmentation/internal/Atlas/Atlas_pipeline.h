@@ -27,6 +27,7 @@
 
 #include <cstddef>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -97,8 +98,14 @@ Atlas_report segment_and_parameterize(const TriangleMesh& tm, FacePatchMap face_
         write_face_labels(input.face_handles, labels, face_patch_map);
         Parameterization_settings unbounded = settings;
         unbounded.bound = Distortion_bound::unbounded();
+        const Parameterization_report first = std::move(report.parameterization);
         report.parameterization =
           parameterize_indexed_patches(tm, input, face_patch_map, uv_map, unbounded, progress, nullptr);
+        // Both calls' solves count.
+        report.parameterization.solved_faces += first.solved_faces;
+        report.parameterization.solved_faces_in_merges += first.solved_faces_in_merges;
+        report.parameterization.solved_faces_in_reroutes += first.solved_faces_in_reroutes;
+        report.parameterization.number_of_solves += first.number_of_solves;
       }
     }
     face_leaves_to_input_order(input.mesh, tree);

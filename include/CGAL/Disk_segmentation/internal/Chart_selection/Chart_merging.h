@@ -284,8 +284,7 @@ private:
       if(to_budget_)
       {
         // Any valid map will do: the fallbacks are tried, ARAP runs to the end.
-        outcome = parameterize_chart_from(m_, u, choice_.method, choice_.use_fallback, from, On_invalid_map::redo,
-                                          nullptr);
+        outcome = choice_.solve(u, On_invalid_map::redo, nullptr, from);
         round.accepted[i] = outcome.valid ? 1 : 0;
         if(round.accepted[i] && !rule_.bound.is_unbounded())
           round.union_excess[i] = rule_.excess(u);
@@ -294,8 +293,7 @@ private:
       if(!start.empty() && rule_.glued_too_concave(u, start))
         return;
       Early_look look{ &choice_.early_look, Early_judgement() };
-      outcome = parameterize_chart_from(m_, u, choice_.method, choice_.use_fallback, from, rule_.on_invalid_map(),
-                                        &look);
+      outcome = choice_.solve(u, rule_.on_invalid_map(), &look, from);
       round.accepted[i] = rule_(u, outcome, round.union_excess[i], look.ended) ? 0 : 1;
     });
   }

@@ -205,7 +205,7 @@ std::size_t reroute_kept_charts(const Chart_choice<Rule>& choice, Region_topolog
       // break the bound far more often (dino: 2 of 119 arcs kept, against
       // 20 from LSCM).
       Early_look look{ &choice.early_look, Early_judgement() };
-      outcomes[i] = parameterize_chart(m, rerouted[i], choice.method, choice.use_fallback, rule.on_invalid_map(), &look);
+      outcomes[i] = choice.solve(rerouted[i], rule.on_invalid_map(), &look);
       failed[j] = rule(rerouted[i], outcomes[i], look.ended) ? 1 : 0;
     });
     bool any = false;

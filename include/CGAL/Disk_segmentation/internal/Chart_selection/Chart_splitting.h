@@ -190,7 +190,7 @@ Region_trial try_region(const Chart_choice<NeedsSplit>& choice, Splitter& splitt
   if(parent && has_elimination_order(parent->first))
     inherit_restricted_order(m, parent->first, chart);
   Early_look look{ &choice.early_look, Early_judgement() };
-  outcome = parameterize_chart(m, chart, choice.method, choice.use_fallback, needs_split.on_invalid_map(), &look);
+  outcome = choice.solve(chart, needs_split.on_invalid_map(), &look);
   double excess = 0.;
   if(faces.size() == 1 || !needs_split(chart, outcome, excess, look.ended))
     return Region_trial::kept;
@@ -248,7 +248,7 @@ void split_step(const Chart_choice<NeedsSplit>& choice, Splitter& splitter, Spli
     for(std::size_t k = 0; k < task.faces.size(); ++k)
     {
       Chart c = make_chart(m, std::vector<Index>(1, task.faces[k]));
-      const Chart_outcome outcome = parameterize_chart(m, c, choice.method, choice.use_fallback);
+      const Chart_outcome outcome = choice.solve(c, On_invalid_map::redo, nullptr);
       std::vector<std::size_t> path = task.path;
       path.push_back(k);
       keep(std::move(path), std::move(c), outcome);

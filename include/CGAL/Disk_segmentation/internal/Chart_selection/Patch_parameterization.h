@@ -328,19 +328,33 @@ Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, con
   const Chart_choice<Split_rule> choice(m, *settings.method, settings.use_fallback, needs_split);
 
   std::unordered_set<std::uint64_t> rejected_regions;
-  std::vector<Kept_chart> kept = descend_to_charts(choice, patches, tree, threads, progress, rejected_regions);
-  if(bounded && settings.merge_charts)
-    merge_kept_charts(choice, topology, kept, for_each, rejected_regions);
-  if(bounded && settings.straighten_borders)
-    reroute_kept_charts(choice, topology, kept, for_each);
   Parameterization_report report;
+  std::vector<Kept_chart> kept = descend_to_charts(choice, patches, tree, threads, progress, rejected_regions);
+  std::size_t solved_before = choice.tally.faces;
+  auto count_solved_since = [&](std::size_t& count) {
+    count += choice.tally.faces - solved_before;
+    solved_before = choice.tally.faces;
+  };
+  if(bounded && settings.merge_charts)
+  {
+    merge_kept_charts(choice, topology, kept, for_each, rejected_regions);
+    count_solved_since(report.solved_faces_in_merges);
+  }
+  if(bounded && settings.straighten_borders)
+  {
+    reroute_kept_charts(choice, topology, kept, for_each);
+    count_solved_since(report.solved_faces_in_reroutes);
+  }
   if(kept.size() > settings.max_charts)
   {
     // The budget wins over the bound, never over validity or max_chart_faces.
     report.charts_before_budget = kept.size();
     merge_kept_charts(choice, topology, kept, for_each, rejected_regions, settings.max_charts);
+    count_solved_since(report.solved_faces_in_merges);
     report.chart_budget_met = kept.size() <= settings.max_charts;
   }
+  report.solved_faces = choice.tally.faces;
+  report.number_of_solves = choice.tally.charts;
   progress("parameterization", patches.size(), patches.size());
 
   std::vector<Chart> charts;

@@ -12,6 +12,8 @@
 #include <CGAL/Disk_segmentation/internal/Parameterization/Chart_methods.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Chart_parameterization.h>
 
+#include <atomic>
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -73,6 +75,21 @@ inline std::string parameterize_chart_with(const Indexed_triangle_mesh& m, Chart
   return method.parameterize_copy(m, c, mesh, border, border_loop, validated, look);
 }
 
+// What solving cost in one call: each time a method runs on a chart
+// (a fallback, a union a merge tries, a chart a reroute changes: every
+// try), the chart's faces. Divided by the mesh's faces, how many times a
+// face was solved.
+struct Solve_tally
+{
+  std::atomic<std::size_t> charts{ 0 }, faces{ 0 };
+
+  void add(const Chart& c)
+  {
+    charts.fetch_add(1, std::memory_order_relaxed);
+    faces.fetch_add(c.triangles.size(), std::memory_order_relaxed);
+  }
+};
+
 struct Chart_outcome
 {
   Parameterization_method used = Parameterization_method::TUTTE;
@@ -93,7 +110,7 @@ struct Chart_outcome
 // requested method from its first start only.
 inline Chart_outcome parameterize_chart(const Indexed_triangle_mesh& m, Chart& c, const Chart_method& requested,
                                         bool use_fallback, On_invalid_map on_invalid = On_invalid_map::redo,
-                                        Early_look* look = nullptr)
+                                        Early_look* look = nullptr, Solve_tally* tally = nullptr)
 {
   Chart_outcome outcome;
   std::vector<Index> border_loop;
@@ -108,6 +125,8 @@ inline Chart_outcome parameterize_chart(const Indexed_triangle_mesh& m, Chart& c
   // The fallback chain: at most three methods (requested, mean value, Tutte).
   for(std::size_t i = 0; i < chain.size(); ++i)
   {
+    if(tally != nullptr)
+      tally->add(c);
     bool validated = false;
     std::string problem = parameterize_chart_with(m, c, *chain[i], border_loop, validated, on_invalid, look);
     bool error = !problem.empty();

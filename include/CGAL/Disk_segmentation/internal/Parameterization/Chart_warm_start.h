@@ -30,10 +30,12 @@ namespace internal {
 // the bound (0.19 of its 0.70 s).
 inline Chart_outcome parameterize_chart_from(const Indexed_triangle_mesh& m, Chart& c, const Chart_method& requested,
                                              bool use_fallback, const Chart_uv* start, On_invalid_map on_invalid,
-                                             Early_look* look = nullptr)
+                                             Early_look* look = nullptr, Solve_tally* tally = nullptr)
 {
   if(start != nullptr && requested.starts_from_a_map() && c.triangles.size() > 1)
   {
+    if(tally != nullptr)
+      tally->add(c);
     Chart_outcome outcome;
     outcome.used = requested.id();
     outcome.problem = requested.parameterize_from_map(m, c, *start, look);
@@ -41,7 +43,7 @@ inline Chart_outcome parameterize_chart_from(const Indexed_triangle_mesh& m, Cha
     if(outcome.valid || on_invalid == On_invalid_map::report)
       return outcome;
   }
-  return parameterize_chart(m, c, requested, use_fallback, on_invalid, look);
+  return parameterize_chart(m, c, requested, use_fallback, on_invalid, look, tally);
 }
 
 // A start map for the union `u` of two parameterized charts `a` and `b`
