@@ -40,7 +40,7 @@ struct Chart_choice
   // fallbacks; counted in `tally`.
   Chart_outcome solve(Chart& c, On_invalid_map on_invalid, Early_look* look, const Chart_uv* start = nullptr) const
   {
-    return parameterize_chart_from(mesh, c, method, use_fallback, start, on_invalid, look, &tally);
+    return parameterize_chart_from(mesh, c, method, use_fallback, start, on_invalid, look, tally);
   }
 };
 

@@ -109,8 +109,8 @@ struct Chart_outcome
 // `On_invalid_map::report`, a chart of more than one triangle gets the
 // requested method from its first start only.
 inline Chart_outcome parameterize_chart(const Indexed_triangle_mesh& m, Chart& c, const Chart_method& requested,
-                                        bool use_fallback, On_invalid_map on_invalid = On_invalid_map::redo,
-                                        Early_look* look = nullptr, Solve_tally* tally = nullptr)
+                                        bool use_fallback, On_invalid_map on_invalid, Early_look* look,
+                                        Solve_tally& tally)
 {
   Chart_outcome outcome;
   std::vector<Index> border_loop;
@@ -125,8 +125,7 @@ inline Chart_outcome parameterize_chart(const Indexed_triangle_mesh& m, Chart& c
   // The fallback chain: at most three methods (requested, mean value, Tutte).
   for(std::size_t i = 0; i < chain.size(); ++i)
   {
-    if(tally != nullptr)
-      tally->add(c);
+    tally.add(c);
     bool validated = false;
     std::string problem = parameterize_chart_with(m, c, *chain[i], border_loop, validated, on_invalid, look);
     bool error = !problem.empty();

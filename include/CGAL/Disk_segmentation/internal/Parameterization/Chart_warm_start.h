@@ -30,12 +30,11 @@ namespace internal {
 // the bound (0.19 of its 0.70 s).
 inline Chart_outcome parameterize_chart_from(const Indexed_triangle_mesh& m, Chart& c, const Chart_method& requested,
                                              bool use_fallback, const Chart_uv* start, On_invalid_map on_invalid,
-                                             Early_look* look = nullptr, Solve_tally* tally = nullptr)
+                                             Early_look* look, Solve_tally& tally)
 {
   if(start != nullptr && requested.starts_from_a_map() && c.triangles.size() > 1)
   {
-    if(tally != nullptr)
-      tally->add(c);
+    tally.add(c);
     Chart_outcome outcome;
     outcome.used = requested.id();
     outcome.problem = requested.parameterize_from_map(m, c, *start, look);
