@@ -296,7 +296,14 @@ def process_mesh(name, path, output_dir, glb, load_options, atlas_options, time_
     # Dask's workers are daemonic processes, which multiprocessing forbids to
     # have children lest they outlive them; this one is killed when it must.
     multiprocessing.current_process().daemon = False
-    child.start()
+    try:
+        child.start()
+    except OSError as error:  # no fork, or the child died before it got its task (a broken pipe)
+        sender.close()
+        receiver.close()
+        # Not the mesh's fault: no error file, the next run does it.
+        return summary_row(name, "error", seconds=time.perf_counter() - start,
+                           error="%s: could not start its process (%s)" % (path, error))
     sender.close()
     row = None
     try:

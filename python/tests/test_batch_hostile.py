@@ -219,15 +219,27 @@ def _children(pid):
     return children
 
 
+def _cpu_ticks(pid):
+    try:
+        with open("/proc/%d/stat" % pid) as f:
+            fields = f.read().rsplit(")", 1)[1].split()
+        return int(fields[11]) + int(fields[12])  # utime + stime
+    except (OSError, ValueError, IndexError):
+        return 0
+
+
 def _mesh_process(timeout=20):
-    """The pid of the process a process_mesh() of this process runs its mesh in."""
+    """The pid of the process a process_mesh() of this process runs its mesh in,
+    once it computes (a child still being started would die with a broken pipe
+    in its parent, which test_a_mesh_process_that_cannot_start_fails_alone covers)."""
     deadline = time.monotonic() + timeout
     while time.monotonic() < deadline:
         for server in _children(os.getpid()):  # the fork server, then its children
             with open("/proc/%d/cmdline" % server, "rb") as f:
                 if b"forkserver" in f.read():
                     for child in _children(server):
-                        return child
+                        if _cpu_ticks(child) >= 5:
+                            return child
         time.sleep(0.02)
     raise AssertionError("no mesh process appeared")
 
@@ -259,6 +271,22 @@ def test_a_mesh_process_that_dies_or_times_out_fails_alone(tmp_path, slow_mesh, 
             assert message in json.load(f)["error"]
     assert not temporary.exists()
     assert not os.path.exists("/proc/%d" % pid)  # killed and reaped
+
+
+def test_a_mesh_process_that_cannot_start_fails_alone(tmp_path, monkeypatch):
+    # As if the child were killed before its parent had sent it its task (the
+    # parent then gets a broken pipe), or the system could not fork.
+    def broken_start(process):
+        raise BrokenPipeError(32, "Broken pipe")
+    monkeypatch.setattr(batch._child_processes().Process, "start", broken_start)
+    out = tmp_path / "out"
+    out.mkdir()
+    path = tmp_path / "tri.off"
+    path.write_text(TRIANGLE)
+    row = batch.process_mesh("tri", str(path), str(out), False, {}, {})
+    assert row["status"] == "error" and row["error"].startswith(str(path) + ": "), row
+    assert "could not start its process" in row["error"] and "Broken pipe" in row["error"], row
+    assert os.listdir(out) == []  # not the mesh's fault: no error file, the next run does it
 
 
 def test_stale_temporaries_are_removed_and_only_they(tmp_path):
