@@ -26,6 +26,10 @@
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
@@ -1396,6 +1400,42 @@ TEST(Atlas, CurvatureSpreadCountsSeparatedSignsButNotNoise)
   }
 }
 
+TEST(Atlas, TheSplitSamplerHoldsMemoryForTheRegionNotTheMesh)
+{
+  // Every thread that splits charts has its own sampler: arrays sized to the
+  // mesh cost 44 bytes per face per thread. The allocator measures it, not
+  // the sampler.
+#if defined(__GLIBC__) && (__GLIBC__ > 2 || (__GLIBC__ == 2 && __GLIBC_MINOR__ >= 33))
+  const Mesh tm = make(TS::torus(400, 150));  // 120k faces
+  DS::internal::Indexed_triangle_mesh m;
+  std::vector<Mesh::Face_index> face_handles;
+  DS::internal::build_indexed_triangle_mesh(tm, DS::parameters::default_values(), m, face_handles);
+  ASSERT_EQ(m.number_of_faces(), 120000u);
+  std::vector<DS::internal::Index> region;  // 400 faces, not an interval
+  for(DS::internal::Index f = 0; f < 1000; ++f)
+    if(f < 200 || f >= 800)
+      region.push_back(f);
+  // Heap chunks and mmapped blocks (large arrays) in use.
+  auto allocated = [] {
+    const struct mallinfo2 info = ::mallinfo2();
+    return info.uordblks + info.hblkhd;
+  };
+  const std::size_t before = allocated();
+  std::size_t held = 0;
+  {
+    DS::internal::Voronoi_fps fps(m);
+    ASSERT_FALSE(fps.run(region, 5).empty());
+    ASSERT_EQ(fps.cells().size(), region.size());
+    held = allocated() - before;
+  }
+  if(before == 0)
+    GTEST_SKIP() << "the allocator keeps no statistics (sanitizers)";
+  EXPECT_LT(held, std::size_t(256 * 1024)) << "a 400-face region of a 120k-face mesh";
+#else
+  GTEST_SKIP() << "needs glibc's mallinfo2()";
+#endif
+}
+
 TEST(Atlas, AConePointIsSplitThroughByTwoSeedsAroundIt)
 {
   // A disk whose centre is raised: the apex is a cone point. The split seeds
@@ -1441,9 +1481,9 @@ TEST(Atlas, AConePointIsSplitThroughByTwoSeedsAroundIt)
   DS::internal::Voronoi_fps fps(m);
   ASSERT_TRUE(fps.run_from_seeds(all, seeds));
   std::size_t size[2] = { 0, 0 }, around_apex[2] = { 0, 0 };
-  for(DS::internal::Index f : all)
+  for(std::size_t k = 0; k < all.size(); ++k)
   {
-    const DS::internal::Index c = fps.cell(f);
+    const DS::internal::Index f = all[k], c = fps.cells()[k];
     ASSERT_LT(c, 2u);
     ++size[c];
     const auto& corners = m.corners[f];
@@ -1454,6 +1494,13 @@ TEST(Atlas, AConePointIsSplitThroughByTwoSeedsAroundIt)
   EXPECT_GT(around_apex[1], 0u);
   EXPECT_GT(size[0], all.size() / 4);
   EXPECT_GT(size[1], all.size() / 4);
+
+  // A seed outside the region: no partition.
+  std::vector<DS::internal::Index> without_a_seed;
+  for(DS::internal::Index f : all)
+    if(f != seeds[1])
+      without_a_seed.push_back(f);
+  EXPECT_FALSE(fps.run_from_seeds(without_a_seed, seeds));
 }
 
 TEST(Atlas, WorksOnPolyhedron)

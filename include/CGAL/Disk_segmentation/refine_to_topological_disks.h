@@ -108,7 +108,8 @@ std::size_t refine_to_topological_disks(const TriangleMesh& tm,
   internal::build_indexed_triangle_mesh(tm, np, m, face_handles);
 
   auto patch_map = internal::checked_patch_map<TriangleMesh>(face_patch_map);
-  internal::Voronoi_fps fps(m);
+  const internal::Dual_arcs arcs = internal::dual_arcs(m);
+  internal::Voronoi_fps fps(m, &arcs);
   std::vector<internal::Index> labels;
   const std::size_t count = internal::refine_regions(
     m, fps, internal::group_faces_by_label(internal::read_face_labels(face_handles, patch_map)), k, labels);

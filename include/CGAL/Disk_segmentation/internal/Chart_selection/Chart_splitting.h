@@ -275,8 +275,8 @@ void split_step(const Chart_choice<NeedsSplit>& choice, Splitter& splitter, Spli
   if(seeds == 0)
     seeds = splitter.fps.run(task.faces, 2).size();
   std::vector<std::vector<Index> > cells(seeds);
-  for(Index f : task.faces)
-    cells[splitter.fps.cell(f)].push_back(f);
+  for(std::size_t k = 0; k < task.faces.size(); ++k)
+    cells[splitter.fps.cells()[k]].push_back(task.faces[k]);
   std::vector<std::vector<Index> > parts =
     refine_region_list(splitter.topology, splitter.fps, std::move(cells), default_number_of_subsamples);
   if(needs_split.smoother != nullptr)
@@ -315,8 +315,9 @@ void split_and_parameterize(const Chart_choice<NeedsSplit>& choice, Splitter& sp
   });
 }
 
-// One Splitter per thread (both members keep per-query scratch state the
-// size of the mesh), made on first use.
+// One Splitter per thread (the disk test and the labels keep per-query
+// scratch state the size of the mesh; the sampler's is the size of the
+// region), made on first use.
 class Per_thread_splitter
 {
 public:

@@ -148,11 +148,14 @@ struct Indexed_triangle_mesh
   // centroid. It approximates the geodesic distance between the two faces
   // and, unlike centroid-to-centroid distances, follows the surface across
   // sharp dihedral angles.
-  double dual_arc_length(Index f, int i) const
+  double dual_arc_length(Index f, int i) const { return dual_arc_length(f, i, centroid(f)); }
+
+  // The same, with f's centroid given (a face's three arcs share it).
+  double dual_arc_length(Index f, int i, const std::array<double, 3>& centroid_of_f) const
   {
     const Index g = neighbors[f][i];
     const std::array<double, 3> m = edge_midpoint(f, i);
-    return distance(centroid(f), m) + distance(m, centroid(g));
+    return distance(centroid_of_f, m) + distance(m, centroid(g));
   }
 };
 

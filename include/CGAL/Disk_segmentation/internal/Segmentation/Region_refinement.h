@@ -74,8 +74,8 @@ inline std::vector<std::vector<Index> > refine_region_list(Region_topology& topo
     const std::vector<Index> seeds = fps.run(region, k);
     CGAL_assertion(seeds.size() >= 2);
     std::vector<std::vector<Index> > cells(seeds.size());
-    for(Index f : region)
-      cells[fps.cell(f)].push_back(f);  // stays sorted: region is
+    for(std::size_t k = 0; k < region.size(); ++k)
+      cells[fps.cells()[k]].push_back(region[k]);  // stays sorted: region is
     for(std::vector<Index>& cell : cells)
     {
       CGAL_assertion(!cell.empty() && cell.size() < region.size());

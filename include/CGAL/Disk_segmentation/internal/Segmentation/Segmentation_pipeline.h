@@ -81,7 +81,9 @@ Segmentation_steps segment_indexed(const Indexed_triangle_mesh& m, const FaceHan
   Segmentation_steps steps;
   CGAL::Real_timer timer;
   timer.start();
-  Voronoi_fps fps(m);
+  // The refinement samples many regions: their arcs are measured once.
+  const Dual_arcs arcs = dual_arcs(m);
+  Voronoi_fps fps(m, &arcs);
   progress("segmentation", 0, 3);
   steps.seeds = voronoi_fps_labels(m, face_handles, fps, np, labels);
   steps.voronoi_cells = steps.seeds.size();

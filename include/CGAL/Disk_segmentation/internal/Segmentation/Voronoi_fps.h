@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <functional>
 #include <limits>
 #include <queue>
@@ -22,6 +23,23 @@
 namespace CGAL {
 namespace Disk_segmentation {
 namespace internal {
+
+// The length of every arc of the dual graph (infinite where a face has no
+// neighbor), by face and edge.
+typedef std::vector<std::array<double, 3> > Dual_arcs;
+
+inline Dual_arcs dual_arcs(const Indexed_triangle_mesh& m)
+{
+  Dual_arcs arcs(m.number_of_faces());
+  for(Index f = 0; f < m.number_of_faces(); ++f)
+  {
+    const std::array<double, 3> centroid_of_f = m.centroid(f);
+    for(int i = 0; i < 3; ++i)
+      arcs[f][i] = m.neighbors[f][i] == no_index ? std::numeric_limits<double>::infinity()
+                                                 : m.dual_arc_length(f, i, centroid_of_f);
+  }
+  return arcs;
+}
 
 // Joint farthest-point sampling and geodesic Voronoi partition on the dual
 // graph of a set of faces (Maggioli et al. 2025, as used by the paper).
@@ -38,18 +56,17 @@ namespace internal {
 class Voronoi_fps
 {
 public:
-  explicit Voronoi_fps(const Indexed_triangle_mesh& m)
-    : m_(m),
-      arc_(m.number_of_faces()),
-      distance_(m.number_of_faces(), infinity()),
-      cell_(m.number_of_faces(), no_index),
-      member_(m.number_of_faces(), 0),
-      is_seed_(m.number_of_faces(), 0)
-  {
-    for(Index f = 0; f < m.number_of_faces(); ++f)
-      for(int i = 0; i < 3; ++i)
-        arc_[f][i] = (m.neighbors[f][i] == no_index) ? infinity() : m.dual_arc_length(f, i);
-  }
+  // Its arrays are sized to the region of the last call, not to the mesh:
+  // one sampler per thread splits charts in parallel, and mesh-sized arrays
+  // cost 44 bytes per face per thread (refined_elephant x4, 355k faces,
+  // 2 threads: 31 MB of the 190 MB heap peak). The arcs' lengths come from
+  // `mesh_arcs` (see dual_arcs()) if given, which must outlive the sampler;
+  // else each call measures those of its region (the splitters do: half a
+  // percent more instructions on refined_elephant than one shared table,
+  // and no memory per face).
+  explicit Voronoi_fps(const Indexed_triangle_mesh& m, const Dual_arcs* mesh_arcs = nullptr)
+    : m_(m), mesh_arcs_(mesh_arcs)
+  {}
 
   // Partitions `region` (distinct face indices in increasing order) into the
   // Voronoi cells of at most `n` farthest-point seeds, with at least one seed
@@ -57,137 +74,198 @@ public:
   // component is `first_seed` when it lies there, otherwise a random face of
   // the component when `rng` is given, otherwise the face farthest from the
   // component's smallest face. Returns the seeds in the order they were
-  // chosen; `cell(f)` then is the position of the seed of f in that list.
+  // chosen; `cells()[k]` then is the position in that list of the seed of
+  // the k-th face of the region.
   std::vector<Index> run(const std::vector<Index>& region, std::size_t n,
                          Index first_seed = no_index, CGAL::Random* rng = nullptr)
   {
     CGAL_precondition(std::is_sorted(region.begin(), region.end()));
     std::vector<Index> seeds;
+    enter(region);
     if(region.empty())
       return seeds;
+    const std::size_t size = region.size();
 
-    enter(region);
-    seed_components(region, first_seed, rng, seeds);
+    std::vector<Index> local_seeds;
+    seed_components(first_seed, rng, local_seeds);
 
-    const std::size_t target = (std::min)((std::max)(n, seeds.size()), region.size());
+    const std::size_t target = (std::min)((std::max)(n, local_seeds.size()), size);
 
     // One multi-source Dijkstra from the component seeds.
-    for(Index f : region)
-      distance_[f] = infinity();
-    for(std::size_t s = 0; s < seeds.size(); ++s)
-      make_seed(seeds[s], static_cast<Index>(s));
-    relax_from(seeds, false);
+    std::fill(distance_.begin(), distance_.end(), infinity());
+    for(std::size_t s = 0; s < local_seeds.size(); ++s)
+      make_seed(local_seeds[s], static_cast<Index>(s));
+    relax_from(local_seeds, false);
 
-    if(seeds.size() < target && target - seeds.size() <= most_scanned_seeds)
+    if(local_seeds.size() < target && target - local_seeds.size() <= most_scanned_seeds)
     {
       // A few seeds (the segmentation's 10, a split's 2 or 5): one scan per
       // seed finds the farthest face, in the heap's order, and no heap is
       // kept; pushing every improved distance into it cost more (Voronoi
       // sampling of refined_elephant x4, 355k faces: 0.40 -> 0.24 s).
-      while(seeds.size() < target)
+      while(local_seeds.size() < target)
       {
         Index s = no_index;
         std::pair<double, Index> best;
-        for(Index f : region)
-          if(is_seed_[f] != stamp_)
+        for(Index k = 0; k < size; ++k)
+          if(!is_seed_[k])
           {
-            const std::pair<double, Index> key(farthest_key(f, distance_[f]), reversed(f));
+            const std::pair<double, Index> key(farthest_key(k, distance_[k]), reversed(k));
             if(s == no_index || best < key)
             {
               best = key;
-              s = f;
+              s = k;
             }
           }
         CGAL_assertion(s != no_index);
-        make_seed(s, static_cast<Index>(seeds.size()));
-        seeds.push_back(s);
+        make_seed(s, static_cast<Index>(local_seeds.size()));
+        local_seeds.push_back(s);
         relax_from(std::vector<Index>(1, s), false);
       }
     }
-    else if(seeds.size() < target)
+    else if(local_seeds.size() < target)
     {
       farthest_.clear();
-      for(Index f : region)
-        if(is_seed_[f] != stamp_)
-          farthest_.push_back(std::make_pair(farthest_key(f, distance_[f]), reversed(f)));
+      for(Index k = 0; k < size; ++k)
+        if(!is_seed_[k])
+          farthest_.push_back(std::make_pair(farthest_key(k, distance_[k]), reversed(k)));
       std::make_heap(farthest_.begin(), farthest_.end());
 
       // One seed per pass, so target - seeds.size() <= |region| passes. The
       // last seed's improvements need not enter the heap.
-      while(seeds.size() < target)
+      while(local_seeds.size() < target)
       {
-        const Index s = pop_farthest(region);
+        const Index s = pop_farthest();
         CGAL_assertion(s != no_index);
-        make_seed(s, static_cast<Index>(seeds.size()));
-        seeds.push_back(s);
+        make_seed(s, static_cast<Index>(local_seeds.size()));
+        local_seeds.push_back(s);
         const std::vector<Index> source(1, s);
-        relax_from(source, seeds.size() < target);
+        relax_from(source, local_seeds.size() < target);
       }
     }
+    seeds.reserve(local_seeds.size());
+    for(Index s : local_seeds)
+      seeds.push_back((*region_)[s]);
     return seeds;
   }
 
   // Partitions `region` into the Voronoi cells of `seeds` (faces of the
-  // region); `cell(f)` then is the position of the seed of f. Returns false
-  // if a face of the region is reached from no seed (another component).
+  // region); `cells()` then gives the position of each face's seed. Returns
+  // false if a face of the region is reached from no seed (another
+  // component), or if a seed is not in the region.
   bool run_from_seeds(const std::vector<Index>& region, const std::vector<Index>& seeds)
   {
     enter(region);
+    std::vector<Index> local_seeds;
     for(std::size_t s = 0; s < seeds.size(); ++s)
     {
-      CGAL_precondition(member_[seeds[s]] == stamp_);
-      make_seed(seeds[s], static_cast<Index>(s));
+      const Index k = local(seeds[s]);
+      if(k == no_index)
+        return false;
+      make_seed(k, static_cast<Index>(s));
+      local_seeds.push_back(k);
     }
-    relax_from(seeds, false);
-    for(Index f : region)
-      if(cell_[f] == no_index)
+    relax_from(local_seeds, false);
+    for(Index c : cell_)
+      if(c == no_index)
         return false;
     return true;
   }
 
-  Index cell(Index f) const { return cell_[f]; }
+  // Per face of the region of the last call, in its order: the position of
+  // its seed.
+  const std::vector<Index>& cells() const { return cell_; }
 
 private:
-  typedef std::pair<double, Index> Entry;  // (distance, face)
+  typedef std::pair<double, Index> Entry;  // (distance, position in the region)
 
   static double infinity() { return std::numeric_limits<double>::infinity(); }
 
   static constexpr std::size_t most_scanned_seeds = 16;
 
-  // Max-heap entries order equal distances by increasing face index.
-  static Index reversed(Index f) { return no_index - f; }
+  // Max-heap entries order equal distances by increasing face index; the
+  // region is sorted, so positions order as the faces do.
+  static Index reversed(Index k) { return no_index - k; }
 
   // Distances are measured in the frame of each face's component; seeds
   // compete across components in the common frame (exact: a power of two).
-  double farthest_key(Index f, double d) const { return d * m_.common_unit(f); }
+  double farthest_key(Index k, double d) const { return d * m_.common_unit((*region_)[k]); }
 
-  // Makes `region` the current region, every face unreached.
+  // The position of face f in the region, or no_index if it is not there;
+  // searched outward from position `near`: faces are numbered along the
+  // surface, so a neighbor's position is mostly close.
+  Index local(Index f, Index near = 0) const
+  {
+    const std::vector<Index>& region = *region_;
+    if(contiguous_)
+      return f >= region.front() && f - region.front() < region.size() ? f - region.front() : no_index;
+    const Index size = static_cast<Index>(region.size());
+    if(size == 0)
+      return no_index;
+    Index low = near, high = near;  // f is in [region[low], region[high]] if there
+    for(Index step = 1; region[high] < f; step *= 2)
+    {
+      low = high;
+      if(high == size - 1)
+        return no_index;
+      high = (std::min)(size - 1, high + step);
+    }
+    for(Index step = 1; f < region[low]; step *= 2)
+    {
+      high = low;
+      if(low == 0)
+        return no_index;
+      low = low > step ? low - step : 0;
+    }
+    const auto it = std::lower_bound(region.begin() + low, region.begin() + high + 1, f);
+    return *it == f ? static_cast<Index>(it - region.begin()) : no_index;
+  }
+
+  // Makes `region` the current region, every face unreached: its dual
+  // graph in positions, with the arcs' lengths.
   void enter(const std::vector<Index>& region)
   {
-    ++stamp_;
-    if(stamp_ == 0)
+    region_ = &region;
+    const std::size_t size = region.size();
+    contiguous_ = size > 0 && region.back() - region.front() + 1 == size;
+    distance_.assign(size, infinity());
+    cell_.assign(size, no_index);
+    is_seed_.assign(size, 0);
+    neighbor_.resize(size);
+    arc_.resize(size);
+    for(Index k = 0; k < size; ++k)
     {
-      std::fill(member_.begin(), member_.end(), 0);
-      std::fill(is_seed_.begin(), is_seed_.end(), 0);
-      stamp_ = 1;
-    }
-    for(Index f : region)
-    {
-      member_[f] = stamp_;
-      distance_[f] = infinity();
-      cell_[f] = no_index;
+      const Index f = region[k];
+      const std::array<double, 3> centroid_of_f = m_.centroid(f);
+      for(int i = 0; i < 3; ++i)
+      {
+        const Index g = m_.neighbors[f][i];
+        if(g == no_index)
+          neighbor_[k][i] = no_index;
+        else
+        {
+          // Where it is when the faces between f and g are in the region too.
+          const std::int64_t guess = std::int64_t(k) + (std::int64_t(g) - std::int64_t(f));
+          neighbor_[k][i] =
+            guess >= 0 && guess < std::int64_t(size) && region[std::size_t(guess)] == g ? Index(guess) : local(g, k);
+        }
+        if(mesh_arcs_ == nullptr)
+          arc_[k][i] = neighbor_[k][i] == no_index ? infinity() : m_.dual_arc_length(f, i, centroid_of_f);
+      }
+      if(mesh_arcs_ != nullptr)
+        arc_[k] = (*mesh_arcs_)[f];
     }
   }
 
-  void make_seed(Index s, Index c)
+  void make_seed(Index k, Index c)
   {
-    distance_[s] = 0.;
-    cell_[s] = c;
-    is_seed_[s] = stamp_;
+    distance_[k] = 0.;
+    cell_[k] = c;
+    is_seed_[k] = 1;
   }
 
   // Dijkstra from `sources` (already at distance 0) inside the current
-  // region; `on_settle(f, d)` sees each face once its distance d is final.
+  // region; `on_settle(k, d)` sees each face once its distance d is final.
   // Only strictly shorter distances are written, so that faces at equal
   // distance keep their older cell.
   template <typename OnSettle>
@@ -202,20 +280,20 @@ private:
     {
       const Entry top = queue_.top();
       queue_.pop();
-      const Index f = top.second;
-      if(top.first > distance_[f])
+      const Index k = top.second;
+      if(top.first > distance_[k])
         continue;
-      on_settle(f, top.first);
+      on_settle(k, top.first);
       for(int i = 0; i < 3; ++i)
       {
-        const Index g = m_.neighbors[f][i];
-        if(g == no_index || member_[g] != stamp_)
+        const Index g = neighbor_[k][i];
+        if(g == no_index)
           continue;
-        const double d = top.first + arc_[f][i];
+        const double d = top.first + arc_[k][i];
         if(d < distance_[g])
         {
           distance_[g] = d;
-          cell_[g] = cell_[f];
+          cell_[g] = cell_[k];
           queue_.push(Entry(d, g));
           if(track_farthest)
           {
@@ -232,16 +310,17 @@ private:
     relax_from(sources, track_farthest, [](Index, double) {});
   }
 
-  Index pop_farthest(const std::vector<Index>& region)
+  Index pop_farthest()
   {
+    const std::size_t size = distance_.size();
     // Stale entries (distance since lowered, or face since made a seed)
     // accumulate; rebuild when they dominate to keep memory O(region).
-    if(farthest_.size() > 4 * region.size() + 64)
+    if(farthest_.size() > 4 * size + 64)
     {
       farthest_.clear();
-      for(Index f : region)
-        if(is_seed_[f] != stamp_)
-          farthest_.push_back(std::make_pair(farthest_key(f, distance_[f]), reversed(f)));
+      for(Index k = 0; k < size; ++k)
+        if(!is_seed_[k])
+          farthest_.push_back(std::make_pair(farthest_key(k, distance_[k]), reversed(k)));
       std::make_heap(farthest_.begin(), farthest_.end());
     }
     // Each pass pops an entry: at most the heap's size.
@@ -250,20 +329,21 @@ private:
       std::pop_heap(farthest_.begin(), farthest_.end());
       const std::pair<double, Index> top = farthest_.back();
       farthest_.pop_back();
-      const Index f = reversed(top.second);
-      if(is_seed_[f] != stamp_ && top.first == farthest_key(f, distance_[f]))
-        return f;
+      const Index k = reversed(top.second);
+      if(!is_seed_[k] && top.first == farthest_key(k, distance_[k]))
+        return k;
     }
     return no_index;
   }
 
   // Finds the edge-connected components of the region in order of their
-  // smallest face and appends one seed per component to `seeds`.
-  void seed_components(const std::vector<Index>& region, Index first_seed,
-                       CGAL::Random* rng, std::vector<Index>& seeds)
+  // smallest face and appends one seed (a position) per component to
+  // `seeds`.
+  void seed_components(Index first_seed, CGAL::Random* rng, std::vector<Index>& seeds)
   {
+    const std::vector<Index>& region = *region_;
     std::vector<Index> component;
-    for(Index root : region)
+    for(Index root = 0; root < region.size(); ++root)
     {
       if(distance_[root] != infinity())
         continue;
@@ -274,21 +354,26 @@ private:
       Index farthest = root;
       double farthest_distance = 0.;
       bool has_first_seed = false;
-      relax_from(std::vector<Index>(1, root), false, [&](Index f, double d)
+      Index first_seed_position = no_index;
+      relax_from(std::vector<Index>(1, root), false, [&](Index k, double d)
       {
         if(rng != nullptr)  // only a random seed needs the component's faces
-          component.push_back(f);
-        has_first_seed = has_first_seed || f == first_seed;
-        if(d > farthest_distance || (d == farthest_distance && f < farthest))
+          component.push_back(k);
+        if(region[k] == first_seed)
         {
-          farthest = f;
+          has_first_seed = true;
+          first_seed_position = k;
+        }
+        if(d > farthest_distance || (d == farthest_distance && k < farthest))
+        {
+          farthest = k;
           farthest_distance = d;
         }
       });
 
       Index seed = farthest;
       if(has_first_seed)
-        seed = first_seed;
+        seed = first_seed_position;
       else if(rng != nullptr)
       {
         std::sort(component.begin(), component.end());
@@ -299,11 +384,14 @@ private:
   }
 
   const Indexed_triangle_mesh& m_;
+  const Dual_arcs* mesh_arcs_;
+  const std::vector<Index>* region_ = nullptr;  // of the last call
+  bool contiguous_ = false;                     // the region is an interval of faces
+  std::vector<std::array<Index, 3> > neighbor_;  // positions, or no_index
   std::vector<std::array<double, 3> > arc_;
   std::vector<double> distance_;
   std::vector<Index> cell_;
-  std::vector<Index> member_, is_seed_;
-  Index stamp_ = 0;
+  std::vector<char> is_seed_;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry> > queue_;
   std::vector<std::pair<double, Index> > farthest_;
 };

@@ -70,9 +70,7 @@ std::vector<Index> voronoi_fps_labels(const Indexed_triangle_mesh& m,
   std::iota(all_faces.begin(), all_faces.end(), Index(0));
   const std::vector<Index> seeds = fps.run(all_faces, n, first, rng.get());
 
-  labels.resize(m.number_of_faces());
-  for(Index f = 0; f < m.number_of_faces(); ++f)
-    labels[f] = fps.cell(f);
+  labels = fps.cells();
   return seeds;
 }
 
