@@ -40,6 +40,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <random>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -1400,17 +1401,58 @@ TEST(Atlas, CurvatureSpreadCountsSeparatedSignsButNotNoise)
   }
 }
 
-TEST(Atlas, TheSplitSamplerHoldsMemoryForTheRegionNotTheMesh)
+TEST(Atlas, RegionSlotsNumberKeysInTheOrderFirstMet)
 {
-  // Every thread that splits charts has its own sampler: arrays sized to the
-  // mesh cost 44 bytes per face per thread. The allocator measures it, not
-  // the sampler.
+  // Checked against std::map on runs of consecutive keys (the usual case),
+  // keys a multiple of a power of two apart and random keys; with the keys'
+  // range given (the array, left for the table when a key falls outside)
+  // or not (the table), with too little room at first.
+  std::mt19937 random(7);
+  for(int pattern = 0; pattern < 3; ++pattern)
+    for(int round = 0; round < 40; ++round)
+    {
+      DS::internal::Region_slots slots;
+      if(round % 2 == 0)
+        slots.clear(random() % 40);
+      else
+        slots.clear(random() % 40, 5000, DS::internal::Index(5000 + random() % 400));
+      std::map<DS::internal::Index, DS::internal::Index> number;
+      const int n = int(random() % 3000);
+      for(int i = 0; i < n; ++i)
+      {
+        const DS::internal::Index key = pattern == 0   ? DS::internal::Index(5000 + random() % 4000)
+                                        : pattern == 1 ? DS::internal::Index((random() % 64) * 4096 + random() % 4)
+                                                       : DS::internal::Index(random() % 4000000000u);
+        const auto known = number.find(key);
+        const DS::internal::Index expected = known == number.end() ? DS::internal::Index(number.size()) : known->second;
+        number.emplace(key, expected);
+        ASSERT_EQ(slots.insert(key), expected);
+      }
+      ASSERT_EQ(slots.size(), number.size());
+      for(const auto& kn : number)
+        ASSERT_EQ(slots.find(kn.first), kn.second);
+      for(int i = 0; i < 1000; ++i)
+      {
+        const DS::internal::Index key = DS::internal::Index(random() % 10000);
+        const auto known = number.find(key);
+        ASSERT_EQ(slots.find(key), known == number.end() ? DS::internal::no_index : known->second);
+      }
+    }
+}
+
+TEST(Atlas, TheSplitScratchHoldsMemoryForTheRegionNotTheMesh)
+{
+  // Every thread that splits charts has its own sampler, disk test, labels
+  // and chart-building slots: arrays sized to the mesh cost about 60 bytes
+  // per face per thread. The allocator measures it, not the scratch.
 #if defined(__GLIBC__) && (__GLIBC__ > 2 || (__GLIBC__ == 2 && __GLIBC_MINOR__ >= 33))
   const Mesh tm = make(TS::torus(400, 150));  // 120k faces
   DS::internal::Indexed_triangle_mesh m;
   std::vector<Mesh::Face_index> face_handles;
   DS::internal::build_indexed_triangle_mesh(tm, DS::parameters::default_values(), m, face_handles);
   ASSERT_EQ(m.number_of_faces(), 120000u);
+  const DS::internal::Interior_curvature curvature(m);  // shared by the threads
+  const DS::internal::Border_smoother smoother(m);
   std::vector<DS::internal::Index> region;  // 400 faces, not an interval
   for(DS::internal::Index f = 0; f < 1000; ++f)
     if(f < 200 || f >= 800)
@@ -1423,9 +1465,21 @@ TEST(Atlas, TheSplitSamplerHoldsMemoryForTheRegionNotTheMesh)
   const std::size_t before = allocated();
   std::size_t held = 0;
   {
-    DS::internal::Voronoi_fps fps(m);
-    ASSERT_FALSE(fps.run(region, 5).empty());
-    ASSERT_EQ(fps.cells().size(), region.size());
+    DS::internal::Splitter splitter(m);
+    ASSERT_FALSE(splitter.fps.run(region, 5).empty());
+    ASSERT_EQ(splitter.fps.cells().size(), region.size());
+    EXPECT_EQ(splitter.topology.count(region).faces, region.size());
+    std::vector<std::vector<DS::internal::Index> > parts(2);
+    for(std::size_t k = 0; k < region.size(); ++k)
+      parts[k < 200 ? 0 : 1].push_back(region[k]);
+    DS::internal::smooth_parts(smoother, splitter, region, parts);
+    EXPECT_EQ(parts[0].size() + parts[1].size(), region.size());
+    curvature.totals(m, region);
+    DS::internal::Chart whole = DS::internal::make_chart(m, region);
+    for(DS::internal::Index v : whole.vertices)
+      whole.uv.push_back({{ m.points[v][0], m.points[v][1] }});
+    DS::internal::Chart part = DS::internal::make_chart(m, parts[0]);
+    DS::internal::restrict_chart(whole, part, splitter.parent_vertices);
     held = allocated() - before;
   }
   if(before == 0)
@@ -2047,7 +2101,7 @@ TEST(Atlas, ChartsBuiltFromSolvedChartsInheritTheirEliminationOrders)
   }
 
   DS::internal::Chart u = DS::internal::make_chart(m, all);
-  DS::internal::inherit_union_order(m, a, b, u);
+  DS::internal::inherit_union_order(a, b, u);
   ASSERT_TRUE(is_permutation_of_vertices(u));
   const std::set<Index> in_a(a.vertices.begin(), a.vertices.end()), in_b(b.vertices.begin(), b.vertices.end());
   std::map<Index, std::size_t> at_a = position_in(a.elimination_order), at_b = position_in(b.elimination_order);
@@ -2097,12 +2151,12 @@ TEST(Atlas, ChartsBuiltFromSolvedChartsInheritTheirEliminationOrders)
       EXPECT_NEAR(u.uv[v][i], fresh.uv[v][i], 1e-9);
 
   DS::internal::Chart piece = DS::internal::make_chart(m, left);
-  DS::internal::inherit_restricted_order(m, u, piece);
+  DS::internal::inherit_restricted_order(u, piece);
   ASSERT_TRUE(is_permutation_of_vertices(piece));
   for(std::size_t k = 1; k < piece.elimination_order.size(); ++k)
     EXPECT_LT(at_u.at(piece.elimination_order[k - 1]), at_u.at(piece.elimination_order[k]));
   DS::internal::Chart outside = DS::internal::make_chart(m, right);
-  DS::internal::inherit_restricted_order(m, a, outside);
+  DS::internal::inherit_restricted_order(a, outside);
   EXPECT_TRUE(outside.elimination_order.empty());
 }
 

@@ -276,7 +276,7 @@ private:
       const Chart& a = kept_[round.pairs[i].first].chart;
       const Chart& b = kept_[round.pairs[i].second].chart;
       if(has_elimination_order(a) && has_elimination_order(b))
-        inherit_union_order(m_, a, b, u);
+        inherit_union_order(a, b, u);
       // ARAP from the two maps glued rather than from LSCM: half the time
       // on the merges, the same charts on 10 meshes of CGAL's data.
       const Chart_uv start = glue_chart_maps(a, b, u);

@@ -12,6 +12,7 @@
 #include <CGAL/Disk_segmentation/internal/Chart_selection/Chart_merging.h>
 #include <CGAL/Disk_segmentation/internal/Execution/parallel.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Indexed_triangle_mesh.h>
+#include <CGAL/Disk_segmentation/internal/Mesh/Region_slots.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Region_topology.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Chart_convexity.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Chart_distortion.h>
@@ -49,16 +50,41 @@ inline double region_area(const Indexed_triangle_mesh& m, const std::vector<Inde
   return area;
 }
 
-// What splitting a chart needs: farthest-point sampling and the disk test.
+// Labels of the faces of one region, no_index for the others, in memory
+// proportional to the region (a model of Border_smoother's Labels).
+class Region_labels
+{
+public:
+  void reset(const std::vector<Index>& faces)
+  {
+    position_.clear_for_keys(faces);
+    for(Index f : faces)
+      position_.insert(f);
+    release_if_far_larger(label_, faces.size());
+    label_.assign(faces.size(), no_index);
+  }
+  Index at(Index f) const
+  {
+    const Index p = position_.find(f);
+    return p == no_index ? no_index : label_[p];
+  }
+  // `f` is a face of the region.
+  void set(Index f, Index label) { label_[position_.find(f)] = label; }
+
+private:
+  Region_slots position_;
+  std::vector<Index> label_;
+};
+
+// What splitting a chart needs: farthest-point sampling and the disk test,
+// with scratch sized to the region at hand (one splitter per thread).
 struct Splitter
 {
-  explicit Splitter(const Indexed_triangle_mesh& m)
-    : fps(m), topology(m), labels(m.number_of_faces(), no_index), vertex_slot(m.number_of_vertices(), no_index)
-  {}
+  explicit Splitter(const Indexed_triangle_mesh& m) : fps(m), topology(m) {}
   Voronoi_fps fps;
   Region_topology topology;
-  std::vector<Index> labels;       // no_index outside the region being split
-  std::vector<Index> vertex_slot;  // scratch of restrict_chart()
+  Region_labels labels;
+  Region_slots parent_vertices;  // scratch of restrict_chart()
 };
 
 // A parameterized chart whose UVs its sub-disks may reuse.
@@ -72,7 +98,7 @@ template <typename NeedsSplit>
 bool accept_restriction(const Parent_chart& parent, Chart& c, Chart_outcome& outcome, Splitter& splitter,
                         const NeedsSplit& needs_split)
 {
-  if(!parent || c.faces.size() < 2 || !restrict_chart(parent->first, c, splitter.vertex_slot).empty())
+  if(!parent || c.faces.size() < 2 || !restrict_chart(parent->first, c, splitter.parent_vertices).empty())
     return false;
   Chart_outcome restricted = parent->second;
   restricted.valid = true;
@@ -87,18 +113,17 @@ bool accept_restriction(const Parent_chart& parent, Chart& c, Chart_outcome& out
 inline void smooth_parts(const Border_smoother& smoother, Splitter& splitter, const std::vector<Index>& faces,
                          std::vector<std::vector<Index> >& parts)
 {
+  splitter.labels.reset(faces);
   for(Index i = 0; i < parts.size(); ++i)
     for(Index f : parts[i])
-      splitter.labels[f] = i;
-  if(smoother.smooth(splitter.labels, faces) > 0)
+      splitter.labels.set(f, i);
+  if(smoother.smooth_labels(splitter.labels, faces) > 0)
   {
     for(std::vector<Index>& part : parts)
       part.clear();
     for(Index f : faces)
-      parts[splitter.labels[f]].push_back(f);
+      parts[splitter.labels.at(f)].push_back(f);
   }
-  for(Index f : faces)
-    splitter.labels[f] = no_index;
 }
 
 // A vertex whose angle defect exceeds this (radians) is a cone point: the
@@ -188,7 +213,7 @@ Region_trial try_region(const Chart_choice<NeedsSplit>& choice, Splitter& splitt
   if(accept_restriction(parent, chart, outcome, splitter, needs_split))
     return Region_trial::kept;
   if(parent && has_elimination_order(parent->first))
-    inherit_restricted_order(m, parent->first, chart);
+    inherit_restricted_order(parent->first, chart);
   Early_look look{ &choice.early_look, Early_judgement() };
   outcome = choice.solve(chart, needs_split.on_invalid_map(), &look);
   double excess = 0.;

@@ -7,6 +7,7 @@
 #include <CGAL/disable_warnings.h>
 
 #include <CGAL/Disk_segmentation/internal/Mesh/Indexed_triangle_mesh.h>
+#include <CGAL/Disk_segmentation/internal/Mesh/Region_slots.h>
 
 #include <vector>
 
@@ -36,19 +37,12 @@ struct Region_counts
   }
 };
 
-// Counts the topology of regions. Scratch arrays are sized to the mesh once
-// and reset only where a region touched them, so that a query costs
-// O(region size), not O(mesh size).
+// Counts the topology of regions in time and memory proportional to the
+// region, not to the mesh (every chart splitter thread holds one).
 class Region_topology
 {
 public:
-  explicit Region_topology(const Indexed_triangle_mesh& m)
-    : m_(m),
-      face_mark_(m.number_of_faces(), 0),
-      vertex_mark_(m.number_of_vertices(), 0),
-      faces_at_vertex_(m.number_of_vertices(), 0),
-      interior_halfedges_at_vertex_(m.number_of_vertices(), 0)
-  {}
+  explicit Region_topology(const Indexed_triangle_mesh& m) : m_(m) {}
 
   const Indexed_triangle_mesh& mesh() const { return m_; }
 
@@ -60,35 +54,48 @@ public:
     if(region.empty())
       return c;
 
-    const Index stamp = next_stamp();
+    faces_.clear_for_keys(region);
     for(Index f : region)
-      face_mark_[f] = stamp;
+      faces_.insert(f);
 
     // Around a vertex v of a manifold mesh, the region's faces form
     // (faces at v) - (interior edges at v) open fans, or one closed fan when
     // both counts are equal. Each interior edge is seen from both of its
     // faces, hence the halfedge count below is twice the edge count.
-    for(Index f : region)
-      for(Index v : m_.corners[f])
-        if(vertex_mark_[v] != stamp)
-        {
-          vertex_mark_[v] = stamp;
-          faces_at_vertex_[v] = 0;
-          interior_halfedges_at_vertex_[v] = 0;
-          touched_vertices_.push_back(v);
-        }
-
+    vertices_.clear_for_corners(m_, region);
+    for(std::vector<Index>* scratch : { &touched_vertices_, &faces_at_vertex_, &interior_halfedges_at_vertex_,
+                                        &neighbor_position_, &stack_ })
+      release_if_far_larger(*scratch, 3 * region.size());
+    release_if_far_larger(visited_, region.size());
+    touched_vertices_.clear();
+    faces_at_vertex_.clear();
+    interior_halfedges_at_vertex_.clear();
+    neighbor_position_.resize(3 * region.size());
     std::size_t boundary_halfedges = 0;
-    for(Index f : region)
+    for(std::size_t p = 0; p < region.size(); ++p)
     {
+      const Index f = region[p];
+      Index corner[3];
       for(int i = 0; i < 3; ++i)
       {
-        ++faces_at_vertex_[m_.corners[f][i]];
-        const Index g = m_.neighbors[f][i];
-        if(g != no_index && face_mark_[g] == stamp)
+        corner[i] = vertices_.insert(m_.corners[f][i]);
+        if(corner[i] == touched_vertices_.size())
         {
-          ++interior_halfedges_at_vertex_[m_.corners[f][i]];
-          ++interior_halfedges_at_vertex_[m_.corners[f][(i + 1) % 3]];
+          touched_vertices_.push_back(m_.corners[f][i]);
+          faces_at_vertex_.push_back(0);
+          interior_halfedges_at_vertex_.push_back(0);
+        }
+        ++faces_at_vertex_[corner[i]];
+      }
+      for(int i = 0; i < 3; ++i)
+      {
+        const Index g = m_.neighbors[f][i];
+        const Index q = g == no_index ? no_index : faces_.find(g);
+        neighbor_position_[3 * p + i] = q;
+        if(q != no_index)
+        {
+          ++interior_halfedges_at_vertex_[corner[i]];
+          ++interior_halfedges_at_vertex_[corner[(i + 1) % 3]];
         }
         else
           ++boundary_halfedges;
@@ -97,7 +104,7 @@ public:
 
     c.vertices = touched_vertices_.size();
     c.edges = (3 * c.faces + boundary_halfedges) / 2;
-    for(Index v : touched_vertices_)
+    for(std::size_t v = 0; v < touched_vertices_.size(); ++v)
     {
       // Both endpoint counters got one increment per interior halfedge.
       const Index interior_edges = interior_halfedges_at_vertex_[v] / 2;
@@ -108,76 +115,58 @@ public:
     // in the region are one input vertex, with two fans.
     if(!m_.split_from.empty())
     {
-      if(input_vertex_mark_.empty())
-        input_vertex_mark_.assign(m_.number_of_vertices(), 0);
+      input_vertices_.clear(touched_vertices_.size());
       for(Index v : touched_vertices_)
-      {
-        Index& mark = input_vertex_mark_[m_.input_vertex(v)];
-        if(mark == stamp)
+        if(input_vertices_.insert(m_.input_vertex(v)) + 1 != input_vertices_.size())
         {
           c.has_pinched_vertex = true;
           --c.vertices;
         }
-        mark = stamp;
-      }
     }
-    touched_vertices_.clear();
 
-    c.edge_components = count_edge_components(region, stamp);
+    c.edge_components = count_edge_components(region.size());
     return c;
   }
 
   bool is_disk(const std::vector<Index>& region) { return count(region).is_disk(); }
 
 private:
-  Index next_stamp()
+  // Over the region's positions, through neighbor_position_.
+  std::size_t count_edge_components(std::size_t n)
   {
-    if(++stamp_ == 0)
-    {
-      // Wrapped around after 2^32 queries: forget every old mark.
-      std::fill(face_mark_.begin(), face_mark_.end(), 0);
-      std::fill(vertex_mark_.begin(), vertex_mark_.end(), 0);
-      std::fill(visit_mark_.begin(), visit_mark_.end(), 0);
-      std::fill(input_vertex_mark_.begin(), input_vertex_mark_.end(), 0);
-      stamp_ = 1;
-    }
-    return stamp_;
-  }
-
-  // Region faces carry `stamp` in face_mark_.
-  std::size_t count_edge_components(const std::vector<Index>& region, Index stamp)
-  {
-    if(visit_mark_.empty())
-      visit_mark_.assign(m_.number_of_faces(), 0);
+    visited_.assign(n, 0);
     std::size_t components = 0;
-    for(Index seed : region)
+    for(std::size_t seed = 0; seed < n; ++seed)
     {
-      if(visit_mark_[seed] == stamp)
+      if(visited_[seed])
         continue;
       ++components;
-      visit_mark_[seed] = stamp;
-      stack_.push_back(seed);
-      // Each face is pushed once (visit_mark_): at most |region| passes in all.
+      visited_[seed] = 1;
+      stack_.push_back(static_cast<Index>(seed));
+      // Each face is pushed once (visited_): at most n passes in all.
       while(!stack_.empty())
       {
-        const Index f = stack_.back();
+        const Index p = stack_.back();
         stack_.pop_back();
-        for(Index g : m_.neighbors[f])
-          if(g != no_index && face_mark_[g] == stamp && visit_mark_[g] != stamp)
+        for(int i = 0; i < 3; ++i)
+        {
+          const Index q = neighbor_position_[3 * p + i];
+          if(q != no_index && !visited_[q])
           {
-            visit_mark_[g] = stamp;
-            stack_.push_back(g);
+            visited_[q] = 1;
+            stack_.push_back(q);
           }
+        }
       }
     }
     return components;
   }
 
   const Indexed_triangle_mesh& m_;
-  Index stamp_ = 0;
-  std::vector<Index> face_mark_, vertex_mark_, visit_mark_, input_vertex_mark_;
-  std::vector<Index> faces_at_vertex_, interior_halfedges_at_vertex_;
-  std::vector<Index> touched_vertices_, stack_;
+  Region_slots faces_, vertices_, input_vertices_;
+  std::vector<Index> touched_vertices_, faces_at_vertex_, interior_halfedges_at_vertex_;
+  std::vector<Index> neighbor_position_, stack_;
+  std::vector<unsigned char> visited_;
 };
 
 } // namespace internal

@@ -8,6 +8,7 @@
 
 #include <CGAL/Disk_segmentation/Chart_parameterizer.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Indexed_triangle_mesh.h>
+#include <CGAL/Disk_segmentation/internal/Mesh/Region_slots.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Free_border_lscm.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Local_global_arap.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Triangle_distortion.h>
@@ -49,52 +50,34 @@ struct Chart
   std::vector<Index> elimination_order;
 };
 
-// A per-thread slot per mesh vertex, for the local vertex of a chart
-// being built or read (a hash map was 1 % of the time); its users leave it
-// all no_index.
-inline std::vector<Index>& vertex_slots(const Indexed_triangle_mesh& m)
+// Per-thread local numbering of the vertices of a chart being built or
+// read, sized to the chart (a mesh-sized array per thread grew with mesh
+// size times threads; std::unordered_map was 1 % of the time).
+inline Region_slots& chart_vertex_slots()
 {
-  thread_local std::vector<Index> slot;
-  if(slot.size() < m.number_of_vertices())
-    slot.assign(m.number_of_vertices(), no_index);
-  return slot;
+  thread_local Region_slots slots;
+  return slots;
 }
 
-// Local vertices are numbered as first met (see vertex_slots()).
+// Local vertices are numbered as first met.
 inline Chart make_chart(const Indexed_triangle_mesh& m, const std::vector<Index>& faces)
 {
-  std::vector<Index>& slot = vertex_slots(m);
+  Region_slots& slots = chart_vertex_slots();
+  slots.clear_for_corners(m, faces);
   Chart c;
-  auto clear_slots = [&] {
-    for(Index v : c.vertices)
-      slot[v] = no_index;
-  };
-  try
+  c.faces = faces;
+  c.triangles.reserve(faces.size());
+  for(Index f : faces)
   {
-    c.faces = faces;
-    c.triangles.reserve(faces.size());
-    for(Index f : faces)
+    std::array<Index, 3> t;
+    for(int i = 0; i < 3; ++i)
     {
-      std::array<Index, 3> t;
-      for(int i = 0; i < 3; ++i)
-      {
-        const Index v = m.corners[f][i];
-        if(slot[v] == no_index)
-        {
-          c.vertices.push_back(v);
-          slot[v] = static_cast<Index>(c.vertices.size() - 1);
-        }
-        t[i] = slot[v];
-      }
-      c.triangles.push_back(t);
+      t[i] = slots.insert(m.corners[f][i]);
+      if(t[i] == c.vertices.size())
+        c.vertices.push_back(m.corners[f][i]);
     }
+    c.triangles.push_back(t);
   }
-  catch(...)
-  {
-    clear_slots();
-    throw;
-  }
-  clear_slots();
   return c;
 }
 
@@ -380,17 +363,18 @@ inline Chart_geometry chart_geometry(const Indexed_triangle_mesh& m, Chart& c)
   std::vector<Eigen::Index> rank;
   if(c.elimination_order.size() == n)
   {
-    std::vector<Index>& slot = vertex_slots(m);
-    for(Index v = 0; v < n; ++v)
-      slot[c.vertices[v]] = v;
+    // The chart's vertices are distinct: each gets its own local index.
+    Region_slots& slots = chart_vertex_slots();
+    slots.clear_for_keys(c.vertices);
+    for(Index v : c.vertices)
+      slots.insert(v);
     rank.resize(n);
     for(std::size_t k = 0; k < n; ++k)
     {
-      CGAL_assertion(slot[c.elimination_order[k]] != no_index);
-      rank[slot[c.elimination_order[k]]] = Eigen::Index(k);
+      const Index local = slots.find(c.elimination_order[k]);
+      CGAL_assertion(local != no_index);
+      rank[local] = Eigen::Index(k);
     }
-    for(Index v : c.vertices)
-      slot[v] = no_index;
   }
   Chart_geometry g(std::move(points), std::move(triangles), std::move(rank));
   if(c.elimination_order.size() != n)

@@ -6,6 +6,7 @@
 
 #include <CGAL/Disk_segmentation/internal/Parameterization/Chart_parameterization.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Indexed_triangle_mesh.h>
+#include <CGAL/Disk_segmentation/internal/Mesh/Region_slots.h>
 
 #include <algorithm>
 #include <array>
@@ -20,25 +21,24 @@ namespace internal {
 // Gives chart `c` (a sub-disk of `parent`) the UVs that `parent` has at its
 // vertices. An injective map restricted to a sub-disk is still injective,
 // so a valid parent gives a valid child at no solver cost; the result is
-// still validated. `slot` is scratch of the mesh's vertex count, all
-// no_index, and left so. Returns what is wrong with the child's UVs, or an
-// empty string.
-inline std::string restrict_chart(const Chart& parent, Chart& c, std::vector<Index>& slot)
+// still validated. `parent_vertices` is scratch. Returns what is wrong with
+// the child's UVs, or an empty string.
+inline std::string restrict_chart(const Chart& parent, Chart& c, Region_slots& parent_vertices)
 {
-  for(Index i = 0; i < parent.vertices.size(); ++i)
-    slot[parent.vertices[i]] = i;
+  // The parent's vertices are distinct: each gets its own local index.
+  parent_vertices.clear_for_keys(parent.vertices);
+  for(Index v : parent.vertices)
+    parent_vertices.insert(v);
   c.uv.assign(c.vertices.size(), {{ 0., 0. }});
   bool inside = true;
   for(Index i = 0; i < c.vertices.size(); ++i)
   {
-    const Index p = slot[c.vertices[i]];
+    const Index p = parent_vertices.find(c.vertices[i]);
     if(p == no_index)
       inside = false;
     else
       c.uv[i] = parent.uv[p];
   }
-  for(Index v : parent.vertices)
-    slot[v] = no_index;
   if(!inside)
     return "not a part of its parent";
   const std::vector<Index> border = chart_border_loop(c);

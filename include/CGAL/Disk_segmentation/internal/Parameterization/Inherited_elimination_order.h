@@ -6,6 +6,7 @@
 
 #include <CGAL/Disk_segmentation/internal/Parameterization/Chart_parameterization.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Indexed_triangle_mesh.h>
+#include <CGAL/Disk_segmentation/internal/Mesh/Region_slots.h>
 
 #include <vector>
 
@@ -23,62 +24,79 @@ namespace internal {
 
 inline bool has_elimination_order(const Chart& c) { return c.elimination_order.size() == c.vertices.size(); }
 
-// A per-thread mark per mesh vertex, left all zero.
-inline std::vector<unsigned char>& vertex_marks(const Indexed_triangle_mesh& m)
+// Per-thread marks of the vertices of one or two charts, sized to them.
+class Chart_vertex_marks
 {
-  thread_local std::vector<unsigned char> mark;
-  if(mark.size() < m.number_of_vertices())
-    mark.assign(m.number_of_vertices(), 0);
-  return mark;
-}
+public:
+  static Chart_vertex_marks& of_this_thread()
+  {
+    thread_local Chart_vertex_marks marks;
+    return marks;
+  }
 
-// Appends to `out` the vertices of `order` marked `value`, in that order.
-inline void append_marked(const std::vector<Index>& order, const std::vector<unsigned char>& mark, unsigned char value,
-                          std::vector<Index>& out)
-{
-  for(Index v : order)
-    if(mark[v] == value)
-      out.push_back(v);
-}
+  // Most marked vertices are those of `vertices`.
+  void clear(const std::vector<Index>& vertices)
+  {
+    slots_.clear_for_keys(vertices);
+    release_if_far_larger(mark_, vertices.size());
+    mark_.clear();
+  }
+
+  unsigned char& operator[](Index v)
+  {
+    const Index p = slots_.insert(v);
+    if(p == mark_.size())
+      mark_.push_back(0);
+    return mark_[p];
+  }
+
+  // Appends to `out` the vertices of `order` marked `value`, in that order.
+  void append_marked(const std::vector<Index>& order, unsigned char value, std::vector<Index>& out)
+  {
+    for(Index v : order)
+      if((*this)[v] == value)
+        out.push_back(v);
+  }
+
+private:
+  Region_slots slots_;
+  std::vector<unsigned char> mark_;
+};
 
 // The order of the union `u` of two solved charts `a` and `b` with
 // elimination orders: the vertices of `a` only, then those of `b` only,
 // each in their chart's order, then the vertices the two share. The shared
 // ones separate the others (no triangle holds a vertex of each), so this is
 // one step of a nested dissection over two orders already fill-reducing.
-inline void inherit_union_order(const Indexed_triangle_mesh& m, const Chart& a, const Chart& b, Chart& u)
+inline void inherit_union_order(const Chart& a, const Chart& b, Chart& u)
 {
   CGAL_precondition(has_elimination_order(a) && has_elimination_order(b));
-  std::vector<unsigned char>& mark = vertex_marks(m);
+  Chart_vertex_marks& mark = Chart_vertex_marks::of_this_thread();
+  mark.clear(u.vertices);
   for(Index v : a.elimination_order)
     mark[v] |= 1;
   for(Index v : b.elimination_order)
     mark[v] |= 2;
   u.elimination_order.clear();
   u.elimination_order.reserve(u.vertices.size());
-  append_marked(a.elimination_order, mark, 1, u.elimination_order);
-  append_marked(b.elimination_order, mark, 2, u.elimination_order);
-  append_marked(a.elimination_order, mark, 3, u.elimination_order);
-  for(Index v : a.elimination_order)
-    mark[v] = 0;
-  for(Index v : b.elimination_order)
-    mark[v] = 0;
+  mark.append_marked(a.elimination_order, 1, u.elimination_order);
+  mark.append_marked(b.elimination_order, 2, u.elimination_order);
+  mark.append_marked(a.elimination_order, 3, u.elimination_order);
   CGAL_postcondition(has_elimination_order(u));
 }
 
 // The order of a chart `piece` cut out of a solved chart `whole`: the
 // order of `whole` restricted to the vertices of `piece`.
-inline void inherit_restricted_order(const Indexed_triangle_mesh& m, const Chart& whole, Chart& piece)
+inline void inherit_restricted_order(const Chart& whole, Chart& piece)
 {
   CGAL_precondition(has_elimination_order(whole));
-  std::vector<unsigned char>& mark = vertex_marks(m);
+  Chart_vertex_marks& mark = Chart_vertex_marks::of_this_thread();
+  mark.clear(whole.vertices);
   for(Index v : piece.vertices)
     mark[v] = 1;
   piece.elimination_order.clear();
   piece.elimination_order.reserve(piece.vertices.size());
-  append_marked(whole.elimination_order, mark, 1, piece.elimination_order);
-  for(Index v : piece.vertices)
-    mark[v] = 0;
+  mark.append_marked(whole.elimination_order, 1, piece.elimination_order);
   // A piece that is not inside `whole` solves with an order of its own.
   if(!has_elimination_order(piece))
     piece.elimination_order.clear();

@@ -43,10 +43,19 @@ public:
   // must be a disk; they stay disks. Returns the number of moves.
   std::size_t smooth(std::vector<Index>& labels, const std::vector<Index>& faces) const
   {
+    Mesh_labels mesh_labels{ labels };
+    return smooth_labels(mesh_labels, faces);
+  }
+
+  // The same with `labels` a model of: Index at(Index face) const (no_index
+  // outside `faces`) and void set(Index face, Index label).
+  template <typename Labels>
+  std::size_t smooth_labels(Labels& labels, const std::vector<Index>& faces) const
+  {
     std::deque<Index> queue(faces.begin(), faces.end());
     std::unordered_map<Index, std::size_t> region_size;
     for(Index f : faces)
-      ++region_size[labels[f]];
+      ++region_size[labels.at(f)];
     std::size_t moves = 0;
     // Each move shortens the total border length strictly (for faces of
     // non-zero area), so a face cannot come back; the cap stops cycles
@@ -57,17 +66,17 @@ public:
     {
       const Index f = queue.front();
       queue.pop_front();
-      if(labels[f] == no_index)
+      if(labels.at(f) == no_index)
         continue;
       Index b = no_index;
-      if(region_size[labels[f]] <= smallest_region || !find_tooth(labels, f, b))
+      if(region_size[labels.at(f)] <= smallest_region || !find_tooth(labels, f, b))
         continue;
-      --region_size[labels[f]];
+      --region_size[labels.at(f)];
       ++region_size[b];
-      labels[f] = b;
+      labels.set(f, b);
       ++moves;
       for(Index g : m_.neighbors[f])
-        if(g != no_index && labels[g] != no_index)
+        if(g != no_index && labels.at(g) != no_index)
           queue.push_back(g);
     }
     return moves;
@@ -76,15 +85,23 @@ public:
   static constexpr std::size_t smallest_region = 3;
 
 private:
-  // Whether f is a tooth of its region into another region `b`.
-  bool find_tooth(const std::vector<Index>& labels, Index f, Index& b) const
+  struct Mesh_labels
   {
-    const Index a = labels[f];
+    std::vector<Index>& labels;
+    Index at(Index f) const { return labels[f]; }
+    void set(Index f, Index label) { labels[f] = label; }
+  };
+
+  // Whether f is a tooth of its region into another region `b`.
+  template <typename Labels>
+  bool find_tooth(const Labels& labels, Index f, Index& b) const
+  {
+    const Index a = labels.at(f);
     Index across[3];
     for(int i = 0; i < 3; ++i)
     {
       const Index g = m_.neighbors[f][i];
-      across[i] = (g == no_index) ? no_index : labels[g];
+      across[i] = (g == no_index) ? no_index : labels.at(g);
     }
     for(int i = 0; i < 3; ++i)
     {

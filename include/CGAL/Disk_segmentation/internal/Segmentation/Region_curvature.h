@@ -5,6 +5,7 @@
 #define CGAL_DISK_SEGMENTATION_INTERNAL_SEGMENTATION_REGION_CURVATURE_H
 
 #include <CGAL/Disk_segmentation/internal/Mesh/Indexed_triangle_mesh.h>
+#include <CGAL/Disk_segmentation/internal/Mesh/Region_slots.h>
 
 #include <CGAL/number_type_config.h>
 
@@ -124,17 +125,21 @@ private:
   void for_each_interior_vertex(const Indexed_triangle_mesh& m, const std::vector<Index>& faces,
                                 const Visit& visit) const
   {
-    // Zero between calls; one per thread, since queries run in parallel.
+    // One per thread, since queries run in parallel; sized to the region.
+    thread_local Region_slots vertex_position;
     thread_local std::vector<Index> faces_met;
-    if(faces_met.size() < degree_.size())
-      faces_met.resize(degree_.size(), 0);
+    vertex_position.clear_for_corners(m, faces);
+    release_if_far_larger(faces_met, 3 * faces.size());
+    faces_met.clear();
     for(Index f : faces)
       for(Index v : m.corners[f])
-        if(++faces_met[v] == degree_[v])
+      {
+        const Index p = vertex_position.insert(v);
+        if(p == faces_met.size())
+          faces_met.push_back(0);
+        if(++faces_met[p] == degree_[v])
           visit(v);
-    for(Index f : faces)
-      for(Index v : m.corners[f])
-        faces_met[v] = 0;
+      }
   }
 
   static constexpr Index border_vertex = no_index;
