@@ -1440,6 +1440,50 @@ TEST(Atlas, RegionSlotsNumberKeysInTheOrderFirstMet)
     }
 }
 
+TEST(Atlas, TheDiskTestJoinsTheCopiesOfASplitVertex)
+{
+  // A closed sphere whose two poles are copies of one input vertex (as the
+  // package splits a vertex where two closed fans meet): on the input it is
+  // a sphere pinched at one point, chi = 1, edge-connected and no disk.
+  const Mesh tm = make(TS::uv_sphere(6, 8));
+  DS::internal::Indexed_triangle_mesh m;
+  std::vector<Mesh::Face_index> face_handles;
+  DS::internal::build_indexed_triangle_mesh(tm, DS::parameters::default_values(), m, face_handles);
+  ASSERT_TRUE(m.split_from.empty());
+  const std::vector<DS::internal::Index> all = every_face(m);
+  DS::internal::Region_topology topology(m);
+  ASSERT_EQ(topology.count(all).euler_characteristic(), 2);
+  // The two vertices of highest valence are the poles.
+  std::vector<std::size_t> valence(m.number_of_vertices(), 0);
+  for(const auto& corners : m.corners)
+    for(DS::internal::Index v : corners)
+      ++valence[v];
+  std::vector<DS::internal::Index> by_valence(m.number_of_vertices());
+  for(DS::internal::Index v = 0; v < by_valence.size(); ++v)
+    by_valence[v] = v;
+  std::sort(by_valence.begin(), by_valence.end(),
+            [&](DS::internal::Index a, DS::internal::Index b) { return valence[a] > valence[b] || (valence[a] == valence[b] && a < b); });
+  m.split_from.resize(m.number_of_vertices());
+  for(DS::internal::Index v = 0; v < m.split_from.size(); ++v)
+    m.split_from[v] = v;
+  m.split_from[by_valence[1]] = by_valence[0];
+  DS::internal::Region_topology joined(m);
+  const DS::internal::Region_counts c = joined.count(all);
+  EXPECT_EQ(c.euler_characteristic(), 1);
+  EXPECT_EQ(c.edge_components, 1u);
+  EXPECT_FALSE(c.is_disk());
+  // Without the faces around one pole, one copy is left: the rest of the
+  // sphere, a disk.
+  std::vector<DS::internal::Index> rest;
+  for(DS::internal::Index f : all)
+  {
+    const auto& k = m.corners[f];
+    if(std::find(k.begin(), k.end(), by_valence[1]) == k.end())
+      rest.push_back(f);
+  }
+  EXPECT_TRUE(joined.count(rest).is_disk());
+}
+
 TEST(Atlas, TheSplitScratchHoldsMemoryForTheRegionNotTheMesh)
 {
   // Every thread that splits charts has its own sampler, disk test, labels

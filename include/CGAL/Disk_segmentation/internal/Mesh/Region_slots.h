@@ -86,13 +86,13 @@ public:
   }
   void clear_for_corners(const Indexed_triangle_mesh& m, const std::vector<Index>& faces)
   {
+    // A face's smallest vertex comes first (see Indexed_triangle_mesh).
     Index lowest = no_index, highest = 0;
     for(Index f : faces)
-      for(Index v : m.corners[f])
-      {
-        lowest = (std::min)(lowest, v);
-        highest = (std::max)(highest, v);
-      }
+    {
+      lowest = (std::min)(lowest, m.corners[f][0]);
+      highest = (std::max)(highest, (std::max)(m.corners[f][1], m.corners[f][2]));
+    }
     clear(faces.size(), lowest, highest);
   }
 

@@ -20,20 +20,25 @@ struct Region_counts
 {
   std::size_t vertices = 0, edges = 0, faces = 0;
   std::size_t edge_components = 0;  // components through edges inside the region
-  bool has_pinched_vertex = false;   // a vertex whose region faces form >= 2 fans
+  bool joins_split_vertex = false;   // holds two copies of an input vertex split by its fans
 
   long euler_characteristic() const
   {
     return static_cast<long>(vertices) - static_cast<long>(edges) + static_cast<long>(faces);
   }
 
-  // An edge-connected surface without pinched vertex is a 2-manifold with
-  // boundary, orientable since the input is; chi = 2 - 2g - b = 1 then forces
-  // g = 0 and b = 1: a topological disk. chi = 1 alone is not enough (two
-  // triangles touching at one vertex have chi = 1).
+  // Cutting the region apart at every vertex where its faces form k >= 2
+  // fans (a pinched vertex) gives k - 1 more vertices and a surface S with
+  // boundary, orientable since the input is, and as edge-connected as the
+  // region: chi(S) = 2 - 2g - b <= 1 (b >= 1: an open fan borders S). So an
+  // edge-connected region with a pinched vertex has chi <= 0, and one with
+  // chi = 1 has none: S is the region, g = 0 and b = 1, a topological disk.
+  // chi = 1 alone is not enough (two triangles touching at one vertex have
+  // chi = 1, in two edge components). Copies of a split input vertex are
+  // fans cut apart already, possibly of a closed S (chi = 2): flagged.
   bool is_disk() const
   {
-    return faces > 0 && edge_components == 1 && !has_pinched_vertex && euler_characteristic() == 1;
+    return faces > 0 && edge_components == 1 && !joins_split_vertex && euler_characteristic() == 1;
   }
 };
 
@@ -57,70 +62,46 @@ public:
     faces_.clear_for_keys(region);
     for(Index f : region)
       faces_.insert(f);
-
-    // Around a vertex v of a manifold mesh, the region's faces form
-    // (faces at v) - (interior edges at v) open fans, or one closed fan when
-    // both counts are equal. Each interior edge is seen from both of its
-    // faces, hence the halfedge count below is twice the edge count.
     vertices_.clear_for_corners(m_, region);
-    for(std::vector<Index>* scratch : { &touched_vertices_, &faces_at_vertex_, &interior_halfedges_at_vertex_,
-                                        &neighbor_position_, &stack_ })
+    for(std::vector<Index>* scratch : { &neighbor_position_, &stack_ })
       release_if_far_larger(*scratch, 3 * region.size());
-    release_if_far_larger(visited_, region.size());
-    touched_vertices_.clear();
-    faces_at_vertex_.clear();
-    interior_halfedges_at_vertex_.clear();
+    release_if_far_larger(visited_, 3 * region.size());
     neighbor_position_.resize(3 * region.size());
+
     std::size_t boundary_halfedges = 0;
     for(std::size_t p = 0; p < region.size(); ++p)
     {
       const Index f = region[p];
-      Index corner[3];
       for(int i = 0; i < 3; ++i)
       {
-        corner[i] = vertices_.insert(m_.corners[f][i]);
-        if(corner[i] == touched_vertices_.size())
-        {
-          touched_vertices_.push_back(m_.corners[f][i]);
-          faces_at_vertex_.push_back(0);
-          interior_halfedges_at_vertex_.push_back(0);
-        }
-        ++faces_at_vertex_[corner[i]];
-      }
-      for(int i = 0; i < 3; ++i)
-      {
+        vertices_.insert(m_.corners[f][i]);
         const Index g = m_.neighbors[f][i];
         const Index q = g == no_index ? no_index : faces_.find(g);
         neighbor_position_[3 * p + i] = q;
-        if(q != no_index)
-        {
-          ++interior_halfedges_at_vertex_[corner[i]];
-          ++interior_halfedges_at_vertex_[corner[(i + 1) % 3]];
-        }
-        else
+        if(q == no_index)
           ++boundary_halfedges;
       }
     }
-
-    c.vertices = touched_vertices_.size();
+    c.vertices = vertices_.size();
     c.edges = (3 * c.faces + boundary_halfedges) / 2;
-    for(std::size_t v = 0; v < touched_vertices_.size(); ++v)
-    {
-      // Both endpoint counters got one increment per interior halfedge.
-      const Index interior_edges = interior_halfedges_at_vertex_[v] / 2;
-      if(faces_at_vertex_[v] >= interior_edges + 2)
-        c.has_pinched_vertex = true;
-    }
-    // Each copy of a pinched input vertex is one of its fans: two of them
-    // in the region are one input vertex, with two fans.
+    // The copies of a pinched input vertex (one per fan) are one vertex of
+    // the input's surface.
     if(!m_.split_from.empty())
     {
-      input_vertices_.clear(touched_vertices_.size());
-      for(Index v : touched_vertices_)
-        if(input_vertices_.insert(m_.input_vertex(v)) + 1 != input_vertices_.size())
+      input_vertices_.clear(c.vertices);
+      visited_.assign(c.vertices, 0);
+      for(Index f : region)
+        for(Index v : m_.corners[f])
         {
-          c.has_pinched_vertex = true;
-          --c.vertices;
+          unsigned char& seen = visited_[vertices_.find(v)];
+          if(seen)
+            continue;
+          seen = 1;
+          if(input_vertices_.insert(m_.input_vertex(v)) + 1 != input_vertices_.size())
+          {
+            c.joins_split_vertex = true;
+            --c.vertices;
+          }
         }
     }
 
@@ -164,7 +145,6 @@ private:
 
   const Indexed_triangle_mesh& m_;
   Region_slots faces_, vertices_, input_vertices_;
-  std::vector<Index> touched_vertices_, faces_at_vertex_, interior_halfedges_at_vertex_;
   std::vector<Index> neighbor_position_, stack_;
   std::vector<unsigned char> visited_;
 };

@@ -130,16 +130,11 @@ private:
     thread_local std::vector<Index> faces_met;
     vertex_position.clear_for_corners(m, faces);
     release_if_far_larger(faces_met, 3 * faces.size());
-    faces_met.clear();
+    faces_met.assign(3 * faces.size(), 0);  // room for every corner's own vertex
     for(Index f : faces)
       for(Index v : m.corners[f])
-      {
-        const Index p = vertex_position.insert(v);
-        if(p == faces_met.size())
-          faces_met.push_back(0);
-        if(++faces_met[p] == degree_[v])
+        if(++faces_met[vertex_position.insert(v)] == degree_[v])
           visit(v);
-      }
   }
 
   static constexpr Index border_vertex = no_index;
