@@ -1440,6 +1440,44 @@ TEST(Atlas, RegionSlotsNumberKeysInTheOrderFirstMet)
     }
 }
 
+TEST(Atlas, RegionValuesKeepAValuePerKeyAcrossClears)
+{
+  // Region_values against std::map: values written through operator[] and
+  // set(), read through at() (which gives no slot) for keys in and out of
+  // the range given at clear, over rounds that reuse the same object.
+  std::mt19937 random(11);
+  DS::internal::Region_values<int> values(-1);
+  for(int round = 0; round < 30; ++round)
+  {
+    std::vector<DS::internal::Index> region;
+    const DS::internal::Index first = DS::internal::Index(random() % 100000);
+    for(int i = 0, n = int(random() % 2000); i < n; ++i)
+      region.push_back(first + DS::internal::Index(random() % 3000));
+    values.clear_for_keys(region);
+    std::map<DS::internal::Index, int> expected;
+    for(int i = 0, n = int(random() % 4000); i < n; ++i)
+    {
+      const DS::internal::Index key =
+        i % 5 == 0 ? DS::internal::Index(random() % 4000000000u) : first + DS::internal::Index(random() % 3000);
+      const int value = int(random() % 100);
+      if(i % 2 == 0)
+        values.set(key, value);
+      else
+        values[key] += value;
+      int& e = expected.emplace(key, -1).first->second;
+      e = (i % 2 == 0) ? value : e + value;
+    }
+    for(const auto& kv : expected)
+      ASSERT_EQ(values.at(kv.first), kv.second);
+    for(int i = 0; i < 1000; ++i)
+    {
+      const DS::internal::Index key = first + DS::internal::Index(random() % 6000);
+      const auto known = expected.find(key);
+      ASSERT_EQ(values.at(key), known == expected.end() ? -1 : known->second);
+    }
+  }
+}
+
 TEST(Atlas, TheDiskTestJoinsTheCopiesOfASplitVertex)
 {
   // A closed sphere whose two poles are copies of one input vertex (as the

@@ -50,40 +50,14 @@ inline double region_area(const Indexed_triangle_mesh& m, const std::vector<Inde
   return area;
 }
 
-// Labels of the faces of one region, no_index for the others, in memory
-// proportional to the region (a model of Border_smoother's Labels).
-class Region_labels
-{
-public:
-  void reset(const std::vector<Index>& faces)
-  {
-    position_.clear_for_keys(faces);
-    for(Index f : faces)
-      position_.insert(f);
-    release_if_far_larger(label_, faces.size());
-    label_.assign(faces.size(), no_index);
-  }
-  Index at(Index f) const
-  {
-    const Index p = position_.find(f);
-    return p == no_index ? no_index : label_[p];
-  }
-  // `f` is a face of the region.
-  void set(Index f, Index label) { label_[position_.find(f)] = label; }
-
-private:
-  Region_slots position_;
-  std::vector<Index> label_;
-};
-
 // What splitting a chart needs: farthest-point sampling and the disk test,
 // with scratch sized to the region at hand (one splitter per thread).
 struct Splitter
 {
-  explicit Splitter(const Indexed_triangle_mesh& m) : fps(m), topology(m) {}
+  explicit Splitter(const Indexed_triangle_mesh& m) : fps(m), topology(m), labels(no_index) {}
   Voronoi_fps fps;
   Region_topology topology;
-  Region_labels labels;
+  Region_values<Index> labels;  // of a region's faces (a model of Border_smoother's Labels)
   Region_slots parent_vertices;  // scratch of restrict_chart()
 };
 
@@ -113,7 +87,7 @@ bool accept_restriction(const Parent_chart& parent, Chart& c, Chart_outcome& out
 inline void smooth_parts(const Border_smoother& smoother, Splitter& splitter, const std::vector<Index>& faces,
                          std::vector<std::vector<Index> >& parts)
 {
-  splitter.labels.reset(faces);
+  splitter.labels.clear_for_keys(faces);
   for(Index i = 0; i < parts.size(); ++i)
     for(Index f : parts[i])
       splitter.labels.set(f, i);

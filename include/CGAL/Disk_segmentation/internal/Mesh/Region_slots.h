@@ -207,6 +207,47 @@ private:
   std::size_t size_ = 0;
 };
 
+// A value for each element of a region (faces or vertices), numbered by
+// Region_slots, so in memory proportional to the region; an element never
+// given one reads as `absent`.
+template <typename T>
+class Region_values
+{
+public:
+  explicit Region_values(T absent) : absent_(absent) {}
+
+  // Forgets every value; most elements given one will be those of `keys`.
+  void clear_for_keys(const std::vector<Index>& keys)
+  {
+    slots_.clear_for_keys(keys);
+    release_if_far_larger(values_, keys.size());
+    values_.clear();
+  }
+
+  // The value of `key`, `absent` until set.
+  T& operator[](Index key)
+  {
+    const Index slot = slots_.insert(key);
+    if(slot == values_.size())
+      values_.push_back(absent_);
+    return values_[slot];
+  }
+
+  // The value of `key` without giving it one.
+  T at(Index key) const
+  {
+    const Index slot = slots_.find(key);
+    return slot == no_index ? absent_ : values_[slot];
+  }
+
+  void set(Index key, T value) { (*this)[key] = value; }
+
+private:
+  Region_slots slots_;
+  std::vector<T> values_;
+  T absent_;
+};
+
 } // namespace internal
 } // namespace Disk_segmentation
 } // namespace CGAL

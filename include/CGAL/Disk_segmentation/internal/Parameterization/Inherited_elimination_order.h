@@ -25,43 +25,20 @@ namespace internal {
 inline bool has_elimination_order(const Chart& c) { return c.elimination_order.size() == c.vertices.size(); }
 
 // Per-thread marks of the vertices of one or two charts, sized to them.
-class Chart_vertex_marks
+inline Region_values<unsigned char>& chart_vertex_marks_of_this_thread()
 {
-public:
-  static Chart_vertex_marks& of_this_thread()
-  {
-    thread_local Chart_vertex_marks marks;
-    return marks;
-  }
+  thread_local Region_values<unsigned char> marks(0);
+  return marks;
+}
 
-  // Most marked vertices are those of `vertices`.
-  void clear(const std::vector<Index>& vertices)
-  {
-    slots_.clear_for_keys(vertices);
-    release_if_far_larger(mark_, vertices.size());
-    mark_.clear();
-  }
-
-  unsigned char& operator[](Index v)
-  {
-    const Index p = slots_.insert(v);
-    if(p == mark_.size())
-      mark_.push_back(0);
-    return mark_[p];
-  }
-
-  // Appends to `out` the vertices of `order` marked `value`, in that order.
-  void append_marked(const std::vector<Index>& order, unsigned char value, std::vector<Index>& out)
-  {
-    for(Index v : order)
-      if((*this)[v] == value)
-        out.push_back(v);
-  }
-
-private:
-  Region_slots slots_;
-  std::vector<unsigned char> mark_;
-};
+// Appends to `out` the vertices of `order` marked `value`, in that order.
+inline void append_marked(const Region_values<unsigned char>& mark, const std::vector<Index>& order,
+                          unsigned char value, std::vector<Index>& out)
+{
+  for(Index v : order)
+    if(mark.at(v) == value)
+      out.push_back(v);
+}
 
 // The order of the union `u` of two solved charts `a` and `b` with
 // elimination orders: the vertices of `a` only, then those of `b` only,
@@ -71,17 +48,17 @@ private:
 inline void inherit_union_order(const Chart& a, const Chart& b, Chart& u)
 {
   CGAL_precondition(has_elimination_order(a) && has_elimination_order(b));
-  Chart_vertex_marks& mark = Chart_vertex_marks::of_this_thread();
-  mark.clear(u.vertices);
+  Region_values<unsigned char>& mark = chart_vertex_marks_of_this_thread();
+  mark.clear_for_keys(u.vertices);
   for(Index v : a.elimination_order)
     mark[v] |= 1;
   for(Index v : b.elimination_order)
     mark[v] |= 2;
   u.elimination_order.clear();
   u.elimination_order.reserve(u.vertices.size());
-  mark.append_marked(a.elimination_order, 1, u.elimination_order);
-  mark.append_marked(b.elimination_order, 2, u.elimination_order);
-  mark.append_marked(a.elimination_order, 3, u.elimination_order);
+  append_marked(mark, a.elimination_order, 1, u.elimination_order);
+  append_marked(mark, b.elimination_order, 2, u.elimination_order);
+  append_marked(mark, a.elimination_order, 3, u.elimination_order);
   CGAL_postcondition(has_elimination_order(u));
 }
 
@@ -90,13 +67,13 @@ inline void inherit_union_order(const Chart& a, const Chart& b, Chart& u)
 inline void inherit_restricted_order(const Chart& whole, Chart& piece)
 {
   CGAL_precondition(has_elimination_order(whole));
-  Chart_vertex_marks& mark = Chart_vertex_marks::of_this_thread();
-  mark.clear(whole.vertices);
+  Region_values<unsigned char>& mark = chart_vertex_marks_of_this_thread();
+  mark.clear_for_keys(whole.vertices);
   for(Index v : piece.vertices)
     mark[v] = 1;
   piece.elimination_order.clear();
   piece.elimination_order.reserve(piece.vertices.size());
-  mark.append_marked(whole.elimination_order, 1, piece.elimination_order);
+  append_marked(mark, whole.elimination_order, 1, piece.elimination_order);
   // A piece that is not inside `whole` solves with an order of its own.
   if(!has_elimination_order(piece))
     piece.elimination_order.clear();
