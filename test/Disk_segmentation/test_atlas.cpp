@@ -104,11 +104,22 @@ TS::Soup pleated_fan()
 
 TEST(Atlas, EveryMethodGivesAValidAtlasOnShippedMeshes)
 {
+  // Under AddressSanitizer (6x slower) each mesh gets two of the five
+  // methods, in turn, so that every method still runs on some meshes; the
+  // release pass runs all of them on every mesh.
+#if defined(__SANITIZE_ADDRESS__)
+  const std::size_t methods_per_mesh = 2;
+#else
+  const std::size_t methods_per_mesh = std::size(TS::all_parameterization_methods);
+#endif
+  std::size_t turn = 0;
   for(const char* name : { "elephant.off", "elephant-with-holes.off", "blobby_3cc.off", "knot1.off",
                            "bones.off", "eight.off", "couplingdown.off" })
   {
-    for(DS::Parameterization_method method : TS::all_parameterization_methods)
+    for(std::size_t k = 0; k < methods_per_mesh; ++k, ++turn)
     {
+      const DS::Parameterization_method method =
+        TS::all_parameterization_methods[turn % std::size(TS::all_parameterization_methods)];
       SCOPED_TRACE(std::string(name) + " " + DS::to_string(method));
       Mesh tm = load(name);
       const Atlas a = make_atlas(tm, DS::parameters::parameterization_method(method));
