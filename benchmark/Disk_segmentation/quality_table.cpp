@@ -58,6 +58,10 @@ int main(int argc, char** argv)
   app.add_option("-n,--seeds", o.seeds, "number of seeds of voronoi and ours")
     ->capture_default_str()
     ->check(CLI::Range(std::size_t(1), std::size_t(1) << 30));
+  app.add_option("--crease-penalty", o.crease_penalty,
+                 "crease_penalty of the `ours` segmentations (0: the paper's distance, the default)")
+    ->capture_default_str()
+    ->check(CLI::NonNegativeNumber);
   app.add_option("--threads", o.threads, "threads per case for parameterize_patches (0: TBB's choice)")
     ->capture_default_str();
   app.add_option("--texture-resolution", o.texture_resolution, "packing and texel-overlap resolution")

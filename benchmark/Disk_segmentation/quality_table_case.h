@@ -80,6 +80,7 @@ struct Case_settings
   std::size_t seeds;
   unsigned int threads;
   unsigned int texture_resolution;
+  double crease_penalty;  // of `ours` (see DS::parameters::crease_penalty())
 };
 
 template <typename NamedParameters>
@@ -138,10 +139,12 @@ void run_case(const Case_settings& s, const Reporter& report)
       count = DS::voronoi_fps_segmentation(mesh, patches, DS::parameters::number_of_seeds(s.seeds));
     else if(s.segmentation == "ours")
       // What uv_atlas() does: smoothed borders, merge tree for the bound.
-      count = DS::segment_into_disks(
-        mesh, patches, DS::parameters::number_of_seeds(s.seeds).merge_tree(&tree).smooth_borders(true));
+      count = DS::segment_into_disks(mesh, patches,
+                                     DS::parameters::number_of_seeds(s.seeds).merge_tree(&tree).smooth_borders(true)
+                                       .crease_penalty(s.crease_penalty));
     else
-      count = DS::segment_into_disks(mesh, patches, DS::parameters::number_of_seeds(s.seeds));
+      count = DS::segment_into_disks(mesh, patches,
+                                     DS::parameters::number_of_seeds(s.seeds).crease_penalty(s.crease_penalty));
   }
   catch(const std::exception& e)
   {

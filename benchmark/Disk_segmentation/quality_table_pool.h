@@ -120,7 +120,8 @@ bool start_child(const Options& o, const std::vector<fs::path>& files, const std
       ::dup2(null, STDIN_FILENO);
     const Reporter report{ fds[1] };
     const Case& c = cases[index];
-    Case_settings s{ files[c.mesh].string(), c.segmentation, c.method, o.seeds, o.threads, o.texture_resolution };
+    Case_settings s{ files[c.mesh].string(), c.segmentation, c.method, o.seeds, o.threads, o.texture_resolution,
+                     o.crease_penalty };
     try
     {
       run_case(s, report);

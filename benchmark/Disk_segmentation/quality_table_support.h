@@ -188,6 +188,7 @@ struct Options
   std::size_t seeds = 10;
   unsigned int threads = 1;
   unsigned int texture_resolution = 1024;
+  double crease_penalty = 0;
   std::string machine_note;
   std::string peers_file;
   bool quiet = false;

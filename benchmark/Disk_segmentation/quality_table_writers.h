@@ -351,8 +351,10 @@ void write_markdown(const fs::path& path, const Options& o, const std::vector<fs
   out << ". Machine: " << o.machine_note << ". Settings: " << o.jobs << " cases at once, " << o.threads
       << " thread(s) per case, time limit " << format_double(o.time_limit)
       << " s per case (mesh x segmentation x method), " << o.seeds
-      << " seeds for `voronoi` and `ours`, TIGHT packing, texture resolution " << o.texture_resolution
-      << ". Total wall time " << fixed(total_seconds, 0) << " s.\n\n";
+      << " seeds for `voronoi` and `ours`, TIGHT packing, texture resolution " << o.texture_resolution;
+  if(o.crease_penalty > 0)
+    out << ", `crease_penalty(" << format_double(o.crease_penalty) << ")` for `ours`";
+  out << ". Total wall time " << fixed(total_seconds, 0) << " s.\n\n";
   out << "**Distortion variant: the benchmark's** (Shay, Solomon & Stein 2022; see the manual's Quality Metrics and "
          "`Atlas_quality` in include/CGAL/Disk_segmentation/atlas_quality.h): per triangle "
          "with Jacobian singular values s1 >= s2, area dist. = s1 s2 + 1/(s1 s2) - 2 and angle dist. = "

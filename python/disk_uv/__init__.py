@@ -151,7 +151,8 @@ def atlas(vertices, faces=None, method=_disk_uv.default_parameterization_method,
           n=_disk_uv.default_number_of_seeds, k=_disk_uv.default_number_of_subsamples,
           threshold=_disk_uv.default_merge_threshold, packer="tight",
           max_chart_faces=_disk_uv.default_max_chart_faces, use_fallback=True, max_charts=None, face_groups=None,
-          materials=None, progress=None, texels_per_unit=0.0, max_pages=_disk_uv.default_max_pages):
+          materials=None, progress=None, texels_per_unit=0.0, max_pages=_disk_uv.default_max_pages,
+          crease_penalty=0.0):
     """UV atlas of a triangle mesh; the options are those of the ``disk_uv`` tool.
 
     ``atlas([(vertices, faces), ...])`` makes one atlas for several meshes
@@ -187,6 +188,9 @@ def atlas(vertices, faces=None, method=_disk_uv.default_parameterization_method,
         threads: at most this many threads (0: all); the result does not depend on it.
         seed: None (deterministic default first seed) or an integer seed.
         n, k, threshold: the segmentation's seeds, subsamples and merge threshold.
+        crease_penalty: Voronoi distances across bent edges are 1 + crease_penalty
+            (1 - cos(dihedral angle)) times longer, so borders follow creases
+            (0: the paper's geodesic distance).
         packer: "tight" (one texel density) or "grid" (the paper's).
         max_chart_faces: larger patches are split before parameterization.
         use_fallback: redo invalid charts with other methods (else keep them, reported).
@@ -221,6 +225,7 @@ def atlas(vertices, faces=None, method=_disk_uv.default_parameterization_method,
                              max_stretch_p95, min_convexity, unbounded, rough_borders, resolution, padding, threads, seed, n,
                              k, threshold, packer, max_chart_faces, use_fallback, max_charts, texels_per_unit,
                              max_pages)
+    options["crease_penalty"] = crease_penalty
     options["face_groups"] = face_groups
     options["materials"] = materials
     options["progress"] = _checked_progress(progress)
@@ -255,15 +260,17 @@ def parametrize(vertices, faces, **options):
 
 
 def segment(vertices, faces, n=_disk_uv.default_number_of_seeds, k=_disk_uv.default_number_of_subsamples,
-            threshold=_disk_uv.default_merge_threshold, progress=None):
+            threshold=_disk_uv.default_merge_threshold, progress=None, crease_penalty=0.0):
     """The paper's segmentation into topological disks: (F,) uint32 patch ids.
 
     Joint farthest-point sampling of ``n`` seeds and geodesic Voronoi cells,
     regions that are not disks re-sampled with ``k`` seeds, adjacent disks
     merged while their union stays a disk and scores below ``threshold``.
+    ``crease_penalty`` lengthens distances across bent edges as in :func:`atlas`.
     ``progress`` and Ctrl-C work as in :func:`atlas`.
     """
     return _disk_uv.segment(vertices, faces, {"n": n, "k": k, "threshold": threshold,
+                                              "crease_penalty": crease_penalty,
                                               "progress": _checked_progress(progress)})
 
 

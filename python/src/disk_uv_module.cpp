@@ -423,6 +423,7 @@ auto atlas_settings(const py::dict& o, std::string& method_name, std::string& pa
   options.number_of_seeds = count_option(o, "n");
   options.number_of_subsamples = count_option(o, "k");
   options.merge_threshold = real_option(o, "threshold");
+  options.crease_penalty = real_option(o, "crease_penalty");
   options.use_fallback = o["use_fallback"].cast<bool>();
   options.rough_borders = o["rough_borders"].cast<bool>();
   options.max_chart_faces = count_option(o, "max_chart_faces");
@@ -558,7 +559,8 @@ py::array_t<std::uint32_t> run_segment(const py::handle& vertices, const py::han
   Patch_map patch = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:patch", 0).first;
   const auto settings = DS::parameters::number_of_seeds(count_option(o, "n"))
                           .number_of_subsamples(count_option(o, "k"))
-                          .merge_threshold(real_option(o, "threshold"));
+                          .merge_threshold(real_option(o, "threshold"))
+                          .crease_penalty(real_option(o, "crease_penalty"));
   run_interruptible(o["progress"], [&](const Keep_going& keep_going) {
     DS::segment_into_disks(mesh, patch, settings.progress_callback(keep_going));
   });

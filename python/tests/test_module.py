@@ -363,6 +363,7 @@ def test_arguments_of_the_wrong_type_raise_a_type_error_naming_them(options, nam
     ({"n": 0}, r"^n \(seeds\) must be at least 1"),
     ({"k": 1}, r"^k \(subsamples\) must be at least 2"),
     ({"threshold": -1.0}, r"^threshold must be"),
+    ({"crease_penalty": -1.0}, r"^crease_penalty must be a finite number >= 0"),
 ])
 def test_errors_name_the_arguments_as_given(options, message):
     vertices, faces = mesh("eight.off")

@@ -108,6 +108,7 @@ expect_error 1 "oriented inconsistently" "$work/flipped.off"
 expect_error 1 "-n/--seeds must be at least 1" "$data/elephant.off" -n 0
 expect_error 1 "-k/--subsamples must be at least 2" "$data/elephant.off" -k 1
 expect_error 1 "--threshold must be" "$data/elephant.off" --threshold -1
+expect_error 1 "--crease-penalty must be a finite number >= 0" "$data/elephant.off" --crease-penalty -1
 expect_error 1 "unknown parameterization method" "$data/elephant.off" --method harmonic2
 expect_error 1 "unknown packer" "$data/elephant.off" --packer best
 expect_error 1 "--resolution must be at least 1" "$data/elephant.off" --resolution 0

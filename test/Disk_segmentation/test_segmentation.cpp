@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <limits>
 #include <map>
 #include <random>
@@ -819,4 +820,79 @@ TEST(Segmentation, FaceGroupsMoveWholeExactlyWhenEveryPatchStaysADisk)
   // Both outcomes were seen, so that the test tests something.
   EXPECT_GT(moved, 20u);
   EXPECT_GT(left, 20u);
+}
+
+namespace {
+
+// The share of the length of the mesh's sharp edges (normals of the two
+// faces more than `degrees` apart) that lies between two patches.
+double sharp_edge_share_on_borders(const Mesh& tm, const Patches<Mesh>& patches, double degrees)
+{
+  auto normal = [&](Mesh::Face_index f) {
+    const auto h = tm.halfedge(f);
+    const K::Point_3 &a = tm.point(tm.source(h)), &b = tm.point(tm.target(h)), &c = tm.point(tm.target(tm.next(h)));
+    const K::Vector_3 n = CGAL::cross_product(b - a, c - a);
+    return n / std::sqrt(n.squared_length());
+  };
+  const double cos_limit = std::cos(degrees * 3.14159265358979323846 / 180.);
+  double sharp = 0, on_borders = 0;
+  for(Mesh::Edge_index e : tm.edges())
+  {
+    if(tm.is_border(e))
+      continue;
+    const Mesh::Face_index f = tm.face(tm.halfedge(e, 0)), g = tm.face(tm.halfedge(e, 1));
+    if(normal(f) * normal(g) >= cos_limit)
+      continue;
+    const double length = std::sqrt(CGAL::squared_distance(tm.point(tm.vertex(e, 0)), tm.point(tm.vertex(e, 1))));
+    sharp += length;
+    if(get(patches.map, f) != get(patches.map, g))
+      on_borders += length;
+  }
+  return sharp > 0 ? on_borders / sharp : 0.;
+}
+
+} // namespace
+
+TEST(Segmentation, ACreasePenaltyPutsSharpEdgesOnPatchBorders)
+{
+  // couplingdown is a machined part: flat and cylindrical faces meeting at
+  // sharp edges. Distances that grow across bent edges make the Voronoi
+  // cells, and so the patches, end at those edges.
+  const Mesh tm = load<Mesh>("couplingdown.off");
+  Patches<Mesh> plain(tm), creased(tm);
+  DS::segment_into_disks(tm, plain.map);
+  const std::size_t n = DS::segment_into_disks(tm, creased.map, DS::parameters::crease_penalty(10.));
+  expect_disk_partition(tm, creased, n);
+  const double plain_share = sharp_edge_share_on_borders(tm, plain, 60.);
+  const double creased_share = sharp_edge_share_on_borders(tm, creased, 60.);
+  std::cout << "sharp edge length on borders: " << plain_share << " without, " << creased_share << " with the penalty, "
+            << n << " patches" << std::endl;
+  EXPECT_GT(creased_share, plain_share + 0.2);
+
+  // The same patches on a Polyhedron_3, and 0 is the paper's distance.
+  const Polyhedron ph = load<Polyhedron>("couplingdown.off");
+  Patches<Polyhedron> on_polyhedron(ph), zero(ph), paper(ph);
+  DS::segment_into_disks(ph, on_polyhedron.map, DS::parameters::crease_penalty(10.));
+  EXPECT_EQ(on_polyhedron.ids(ph), creased.ids(tm));
+  DS::segment_into_disks(ph, zero.map, DS::parameters::crease_penalty(0.));
+  DS::segment_into_disks(ph, paper.map);
+  EXPECT_EQ(zero.ids(ph), paper.ids(ph));
+  EXPECT_EQ(paper.ids(ph), plain.ids(tm));
+
+  // A penalty that is not a finite number >= 0 is refused, naming it, and
+  // the map is left as it was.
+  for(double bad : { -1., std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity() })
+  {
+    const std::vector<std::size_t> before = creased.ids(tm);
+    try
+    {
+      DS::segment_into_disks(tm, creased.map, DS::parameters::crease_penalty(bad));
+      ADD_FAILURE() << "crease_penalty " << bad << " was accepted";
+    }
+    catch(const DS::Input_error& e)
+    {
+      EXPECT_NE(std::string(e.what()).find("crease_penalty"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(creased.ids(tm), before);
+  }
 }

@@ -430,6 +430,9 @@ void add_options(CLI::App& app, Command_line& line)
   app.add_option("-n,--seeds", options.number_of_seeds, "number of farthest-point seeds")->capture_default_str()->check(non_negative_count);
   app.add_option("-k,--subsamples", options.number_of_subsamples, "seeds used to re-sample a region that is not a disk")->capture_default_str()->check(non_negative_count);
   app.add_option("--threshold", options.merge_threshold, "merge score threshold (eps_5 = 0.7624 by default)")->capture_default_str();
+  app.add_option("--crease-penalty", options.crease_penalty,
+                 "Voronoi distances cross bent edges at 1 + K (1 - cos(dihedral angle)) times their length: "
+                 "borders follow creases (0: the paper's geodesic distance)")->capture_default_str();
   app.add_option("--max-angle-distortion", bound.max_angle_distortion,
                  "largest mean |log(s1/s2)| of a chart (inf: no bound)")->capture_default_str();
   app.add_option("--max-area-distortion", bound.max_area_distortion,

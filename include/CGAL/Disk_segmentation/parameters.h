@@ -28,6 +28,7 @@ namespace internal_np {
 enum number_of_seeds_t { number_of_seeds };
 enum number_of_subsamples_t { number_of_subsamples };
 enum merge_threshold_t { merge_threshold };
+enum crease_penalty_t { crease_penalty };
 enum first_seed_t { first_seed };
 enum seeds_output_iterator_t { seeds_output_iterator };
 enum parameterization_method_t { parameterization_method };
@@ -97,6 +98,7 @@ struct Named_function_parameters
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(number_of_seeds_t, number_of_seeds)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(number_of_subsamples_t, number_of_subsamples)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(merge_threshold_t, merge_threshold)
+  CGAL_DISK_SEGMENTATION_ADD_PARAMETER(crease_penalty_t, crease_penalty)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(first_seed_t, first_seed)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(seeds_output_iterator_t, seeds_output_iterator)
   CGAL_DISK_SEGMENTATION_ADD_PARAMETER(parameterization_method_t, parameterization_method)
@@ -168,6 +170,11 @@ CGAL_DISK_SEGMENTATION_ADD_PARAMETER(number_of_subsamples_t, number_of_subsample
 /// \ingroup PkgDiskSegmentationRef
 /// Score threshold `eps` of the greedy merging.
 CGAL_DISK_SEGMENTATION_ADD_PARAMETER(merge_threshold_t, merge_threshold)
+/// \ingroup PkgDiskSegmentationRef
+/// Penalty `k` >= 0 on dual arcs across bent edges: an arc between faces whose
+/// normals make an angle theta is `1 + k (1 - cos theta)` times its length
+/// (0: the paper's geodesic distance).
+CGAL_DISK_SEGMENTATION_ADD_PARAMETER(crease_penalty_t, crease_penalty)
 /// \ingroup PkgDiskSegmentationRef
 /// Output iterator receiving the seed faces in the order they were chosen.
 CGAL_DISK_SEGMENTATION_ADD_PARAMETER(seeds_output_iterator_t, seeds_output_iterator)

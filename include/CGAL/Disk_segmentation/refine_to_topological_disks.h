@@ -54,6 +54,14 @@ namespace Disk_segmentation {
 ///     \cgalParamDefault{`5`}
 ///     \cgalParamExtra{must be at least 2}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{crease_penalty}
+///     \cgalParamDescription{a dual arc across an edge whose two faces' normals make an angle
+///       \f$ \theta \f$ is \f$ 1 + k (1 - \cos\theta) \f$ times longer, so that Voronoi cells, and
+///       the borders of the regions, follow creases (not in the paper; see \ref DS_Creases)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`0` (the paper's geodesic distance on the dual mesh)}
+///     \cgalParamExtra{must be a finite number \f$ \geq 0 \f$}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_point_map}
 ///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
 ///     \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key type and the traits' `Point_3` as value type}

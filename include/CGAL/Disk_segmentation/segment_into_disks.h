@@ -45,7 +45,7 @@ namespace Disk_segmentation {
 ///        patch's first face in the package's face order (see \ref DS_FaceOrder)
 /// @param np an optional sequence of \ref PkgDiskSegmentationNamedParameters "Named Parameters":
 ///        all those of the three functions (`number_of_seeds`,
-///        `random_seed`, `seeds_output_iterator`, `number_of_subsamples`,
+///        `random_seed`, `seeds_output_iterator`, `crease_penalty`, `number_of_subsamples`,
 ///        `merge_threshold`, `merge_tree`, `smooth_borders`, `vertex_point_map`, `geom_traits`,
 ///        `face_index_map`, `vertex_index_map`), and `progress_callback`, called with
 ///        `("segmentation", s, 3)` after each step `s` (and `s = 0` first); its `false`

@@ -57,6 +57,7 @@ void check_uv_atlas_parameters(const NamedParameters& np = parameters::default_v
     choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_subsamples), default_number_of_subsamples),
     "number_of_subsamples"));
   internal::merge_threshold_parameter(np);
+  internal::crease_penalty_parameter(np);
   internal::parameterization_settings(np);
   internal::packing_settings(np);
 }

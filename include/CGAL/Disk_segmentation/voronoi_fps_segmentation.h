@@ -55,6 +55,14 @@ namespace Disk_segmentation {
 ///     \cgalParamDefault{`10`}
 ///     \cgalParamExtra{must be at least 1}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{crease_penalty}
+///     \cgalParamDescription{a dual arc across an edge whose two faces' normals make an angle
+///       \f$ \theta \f$ is \f$ 1 + k (1 - \cos\theta) \f$ times longer, so that Voronoi cells, and
+///       the borders of the regions, follow creases (not in the paper; see \ref DS_Creases)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`0` (the paper's geodesic distance on the dual mesh)}
+///     \cgalParamExtra{must be a finite number \f$ \geq 0 \f$}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{random_seed}
 ///     \cgalParamDescription{when given, the first seed of every component is drawn at random with this seed; without it, the first seed of every component is the face farthest from the component's first face in the package's face order (see \ref DS_FaceOrder)}
 ///     \cgalParamType{`unsigned int`}

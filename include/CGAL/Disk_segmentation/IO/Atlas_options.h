@@ -34,6 +34,8 @@ struct Atlas_options
   std::size_t number_of_seeds = default_number_of_seeds;
   std::size_t number_of_subsamples = default_number_of_subsamples;
   double merge_threshold = regular_polygon_threshold(default_merge_threshold_sides);
+  /// Longer dual arcs across bent edges (see `parameters::crease_penalty()`; 0: the paper's distance).
+  double crease_penalty = 0;
   /// A name `parameterization_method_from_string()` reads.
   std::string method = to_string(default_parameterization_method);
   /// "tight" or "grid" (see `packing_method_from_string()`).
@@ -123,7 +125,7 @@ inline auto atlas_parameters(const Atlas_options& options)
     options.max_number_of_charts == 0 ? Disk_segmentation::internal::no_chart_budget : options.max_number_of_charts;
   const auto settings =
     parameters::number_of_seeds(options.number_of_seeds).number_of_subsamples(options.number_of_subsamples)
-      .merge_threshold(options.merge_threshold)
+      .merge_threshold(options.merge_threshold).crease_penalty(options.crease_penalty)
       .parameterization_method(method).use_fallback(options.use_fallback)
       .max_angle_distortion(unbounded ? inf : bound.max_angle_distortion)
       .max_area_distortion(unbounded ? inf : bound.max_area_distortion)
@@ -157,12 +159,13 @@ struct Parameter_name
 
 /// \ingroup PkgDiskSegmentationIO
 /// Every parameter a front end sets, with its three names.
-inline const std::array<Parameter_name, 19>& parameter_names()
+inline const std::array<Parameter_name, 20>& parameter_names()
 {
-  static const std::array<Parameter_name, 19> names = { {
+  static const std::array<Parameter_name, 20> names = { {
     { "number_of_seeds", "-n/--seeds", "n (seeds)" },
     { "number_of_subsamples", "-k/--subsamples", "k (subsamples)" },
     { "merge_threshold", "--threshold", "threshold" },
+    { "crease_penalty", "--crease-penalty", "crease_penalty" },
     { "parameterization_method", "--method", "method" },
     { "packing_method", "--packer", "packer" },
     { "texture_resolution", "--resolution", "resolution" },

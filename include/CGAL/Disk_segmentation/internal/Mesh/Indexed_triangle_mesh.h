@@ -62,6 +62,9 @@ struct Indexed_triangle_mesh
   // split_pinched_vertex()): vertex -> the one that stands for its input
   // vertex, so that topology is judged on the input. Empty: itself.
   std::vector<Index> split_from;
+  // Dual arcs across an edge whose faces' normals make an angle theta are
+  // 1 + crease_penalty (1 - cos theta) times longer (see dual_arc_length()).
+  double crease_penalty = 0;
 
   std::size_t number_of_faces() const { return corners.size(); }
   std::size_t input_position(Index f) const { return input_face.empty() ? f : input_face[f]; }
@@ -121,11 +124,8 @@ struct Indexed_triangle_mesh
 
   double area(Index f) const
   {
-    const auto& a = point(f, 0); const auto& b = point(f, 1); const auto& c = point(f, 2);
-    const double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
-    const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
-    const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
-    return 0.5 * std::sqrt(nx * nx + ny * ny + nz * nz);
+    const std::array<double, 3> n = normal_vector(f);
+    return 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
   }
 
   // Area in the units shared by all components (see common_unit()).
@@ -155,7 +155,29 @@ struct Indexed_triangle_mesh
   {
     const Index g = neighbors[f][i];
     const std::array<double, 3> m = edge_midpoint(f, i);
-    return distance(centroid_of_f, m) + distance(m, centroid(g));
+    const double length = distance(centroid_of_f, m) + distance(m, centroid(g));
+    return crease_penalty > 0 ? length * (1 + crease_penalty * (1 - normal_cosine(f, g))) : length;
+  }
+
+  // The cosine of the angle between the normals of faces f and g (1 if
+  // either is degenerate).
+  double normal_cosine(Index f, Index g) const
+  {
+    const std::array<double, 3> a = normal_vector(f), b = normal_vector(g);
+    const double la = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+    const double lb = std::sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
+    if(!(la > 0) || !(lb > 0))
+      return 1;
+    return (std::max)(-1., (std::min)(1., (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / (la * lb)));
+  }
+
+  // Twice the area vector of face f.
+  std::array<double, 3> normal_vector(Index f) const
+  {
+    const auto& a = point(f, 0); const auto& b = point(f, 1); const auto& c = point(f, 2);
+    const double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
+    const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
+    return {{ uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx }};
   }
 };
 
@@ -742,6 +764,7 @@ void build_indexed_triangle_mesh(const TriangleMesh& tm,
   }
   renumber_for_locality(out, face_handles, vertex_handles);
   normalize_coordinates(out);
+  out.crease_penalty = crease_penalty_parameter(np);
   if(vertex_handles_out != nullptr)
     vertex_handles_out->swap(vertex_handles);
 }

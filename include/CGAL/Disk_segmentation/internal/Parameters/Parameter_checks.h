@@ -47,6 +47,20 @@ std::size_t count_parameter(const T& value, const char* name)
   return static_cast<std::size_t>(value);
 }
 
+// The `crease_penalty` named parameter (0, the paper's geodesic distance,
+// by default): a finite number >= 0.
+template <typename NamedParameters>
+double crease_penalty_parameter(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const double penalty = static_cast<double>(
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::crease_penalty), 0.));
+  if(!(penalty >= 0) || !(penalty <= (std::numeric_limits<double>::max)()))
+    throw Input_error("crease_penalty must be a finite number >= 0 (got " + std::to_string(penalty) + ")");
+  return penalty;
+}
+
 // The `number_of_threads` named parameter (0, TBB's choice, by default);
 // counts above what an unsigned int holds mean "as many as there are".
 template <typename NamedParameters>
@@ -134,6 +148,7 @@ struct is_kernel_point<Point, std::void_t<typename Point::R>> : std::true_type
 typedef std::tuple<
   Disk_segmentation::internal_np::number_of_seeds_t, Disk_segmentation::internal_np::number_of_subsamples_t,
   Disk_segmentation::internal_np::merge_threshold_t, Disk_segmentation::internal_np::first_seed_t,
+  Disk_segmentation::internal_np::crease_penalty_t,
   Disk_segmentation::internal_np::seeds_output_iterator_t,
   Disk_segmentation::internal_np::parameterization_method_t, Disk_segmentation::internal_np::parameterizer_t,
   Disk_segmentation::internal_np::use_fallback_t,

@@ -57,6 +57,7 @@ auto canonical_parameters(const NamedParameters& np)
   return forward_mesh_parameters(np, parameters::number_of_seeds(seeds)
                                        .number_of_subsamples(subsamples)
                                        .merge_threshold(merge_threshold_parameter(np))
+                                       .crease_penalty(crease_penalty_parameter(np))
                                        .smooth_borders(smooth));
 }
 
