@@ -121,6 +121,12 @@ namespace Disk_segmentation {
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`default_smooth_borders` (`true`)}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{crease_penalty}
+///     \cgalParamDescription{the distance of the Voronoi cells that split a patch over the bound (see
+///       `voronoi_fps_segmentation()`); give the value the patches were segmented with}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`0` (the paper's geodesic distance on the dual mesh)}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{merge_charts}
 ///     \cgalParamDescription{whether adjacent charts are merged, once chosen, when their union is a disk
 ///       that meets the bound (only under a bound); merged charts may join pieces of
