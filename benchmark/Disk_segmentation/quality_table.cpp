@@ -59,9 +59,9 @@ int main(int argc, char** argv)
     ->capture_default_str()
     ->check(CLI::Range(std::size_t(1), std::size_t(1) << 30));
   app.add_option("--crease-penalty", o.crease_penalty,
-                 "crease_penalty of the `ours` segmentations (0: the paper's distance, the default)")
+                 "crease_penalty of the `ours` segmentations (0: the paper's distance)")
     ->capture_default_str()
-    ->check(CLI::NonNegativeNumber);
+    ->check(CLI::Range(0., (std::numeric_limits<double>::max)()));
   app.add_option("--threads", o.threads, "threads per case for parameterize_patches (0: TBB's choice)")
     ->capture_default_str();
   app.add_option("--texture-resolution", o.texture_resolution, "packing and texel-overlap resolution")

@@ -136,7 +136,9 @@ void run_case(const Case_settings& s, const Reporter& report)
     if(s.segmentation == "components")
       count = PMP::connected_components(mesh, patches);
     else if(s.segmentation == "voronoi")
-      count = DS::voronoi_fps_segmentation(mesh, patches, DS::parameters::number_of_seeds(s.seeds));
+      // The paper's baseline, by the paper's distance.
+      count = DS::voronoi_fps_segmentation(mesh, patches,
+                                           DS::parameters::number_of_seeds(s.seeds).crease_penalty(0.));
     else if(s.segmentation == "ours")
       // What uv_atlas() does: smoothed borders, merge tree for the bound.
       count = DS::segment_into_disks(mesh, patches,
@@ -163,7 +165,9 @@ void run_case(const Case_settings& s, const Reporter& report)
   DS::Parameterization_report p;
   try
   {
-    const auto np = DS::parameters::parameterization_method(s.method).number_of_threads(s.threads);
+    // The splits of a patch over the bound use the segmentation's distance.
+    const auto np = DS::parameters::parameterization_method(s.method).number_of_threads(s.threads)
+                      .crease_penalty(s.crease_penalty);
     const double inf = std::numeric_limits<double>::infinity();
     if(s.segmentation == "ours")
       p = parameterize(mesh, patches, uv, np.merge_tree(&tree));
@@ -177,7 +181,10 @@ void run_case(const Case_settings& s, const Reporter& report)
                          .distortion_bound(DS::Distortion_bound::unbounded())
                          .smooth_borders(false));
     else
-      p = parameterize(mesh, patches, uv, np.use_fallback(false).require_disk_patches(false));
+      // The paper's baselines: no bound (use_fallback(false) alone keeps it).
+      p = parameterize(mesh, patches, uv,
+                       np.use_fallback(false).require_disk_patches(false)
+                         .distortion_bound(DS::Distortion_bound::unbounded()));
   }
   catch(const std::exception& e)
   {

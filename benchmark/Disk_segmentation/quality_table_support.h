@@ -10,6 +10,7 @@
 #include <CGAL/Disk_segmentation/Input_error.h>
 #include <CGAL/Disk_segmentation/Parameterization_method.h>
 #include <CGAL/Disk_segmentation/atlas_quality.h>
+#include <CGAL/Disk_segmentation/default_values.h>
 #include <CGAL/Disk_segmentation/pack_patches.h>
 #include <CGAL/Disk_segmentation/parameterize_patches.h>
 #include <CGAL/Disk_segmentation/parameters.h>
@@ -188,7 +189,7 @@ struct Options
   std::size_t seeds = 10;
   unsigned int threads = 1;
   unsigned int texture_resolution = 1024;
-  double crease_penalty = 0;
+  double crease_penalty = DS::default_crease_penalty;
   std::string machine_note;
   std::string peers_file;
   bool quiet = false;

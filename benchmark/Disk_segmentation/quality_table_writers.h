@@ -352,8 +352,9 @@ void write_markdown(const fs::path& path, const Options& o, const std::vector<fs
       << " thread(s) per case, time limit " << format_double(o.time_limit)
       << " s per case (mesh x segmentation x method), " << o.seeds
       << " seeds for `voronoi` and `ours`, TIGHT packing, texture resolution " << o.texture_resolution;
-  if(o.crease_penalty > 0)
-    out << ", `crease_penalty(" << format_double(o.crease_penalty) << ")` for `ours`";
+  out << ", `crease_penalty(" << format_double(o.crease_penalty) << ")` for `ours`";
+  if(o.crease_penalty == 0)
+    out << " (the paper's distance)";
   out << ". Total wall time " << fixed(total_seconds, 0) << " s.\n\n";
   out << "**Distortion variant: the benchmark's** (Shay, Solomon & Stein 2022; see the manual's Quality Metrics and "
          "`Atlas_quality` in include/CGAL/Disk_segmentation/atlas_quality.h): per triangle "
@@ -369,9 +370,10 @@ void write_markdown(const fs::path& path, const Options& o, const std::vector<fs
          "UV area is (numerically) zero; like flipped faces they are left out of the distortion means. "
          "Seconds are wall-clock means per stage.\n\n";
   out << "Segmentations: Conn. Comp. = one chart per connected component; Voronoi = geodesic Voronoi cells of "
-      << o.seeds << " farthest-point seeds (`voronoi_fps_segmentation`, no refinement or merging); both "
-         "parameterized with `use_fallback(false)` and `require_disk_patches(false)`, so non-disk charts are "
-         "attempted as in the paper. Ours = `segment_into_disks` and `parameterize_patches` with their defaults: "
+      << o.seeds << " farthest-point seeds (`voronoi_fps_segmentation` with `crease_penalty(0)`, the paper's "
+         "distance; no refinement or merging); both parameterized with `use_fallback(false)`, "
+         "`require_disk_patches(false)` and no distortion bound, so non-disk charts are attempted as in the "
+         "paper. Ours = `segment_into_disks` and `parameterize_patches` with their defaults: "
          "an invalid chart is redone with mean value coordinates, then Tutte, then split, and a chart that "
          "exceeds the default `Distortion_bound` (mean |log s1/s2| "
       << format_double(DS::Distortion_bound().max_angle_distortion) << ", mean |log s1 s2| "
@@ -381,8 +383,8 @@ void write_markdown(const fs::path& path, const Options& o, const std::vector<fs
       << format_double(DS::Distortion_bound().max_area_scale)
       << ") is replaced by its two children in the merge tree, down to the refined regions, then split by "
          "Voronoi cells (this is not in the paper); "
-         "Ours, no split = the same without bound (`Distortion_bound::unbounded()`): the paper's charts, invalid ones "
-         "repaired; Ours, no fallback = the same segmentation with `use_fallback(false)` (no repair, no split)."
+         "Ours, no split = the same without bound (`Distortion_bound::unbounded()`): the paper's charts (with "
+         "`--crease-penalty 0`), invalid ones repaired; Ours, no fallback = the same segmentation with `use_fallback(false)` (no repair, no split)."
          "\n\n";
 
   const char* header =

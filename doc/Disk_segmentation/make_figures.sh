@@ -42,8 +42,8 @@ colored() { # OUTPUT.png, then disk_uv options; renders the charts on the mesh
 }
 
 echo "The paper's charts against the distortion bound, merge-tree descent and smoothed borders:"
-colored elephant_charts_paper.png --unbounded --rough-borders
-atlas elephant_atlas_paper.png --unbounded --rough-borders
+colored elephant_charts_paper.png --unbounded --rough-borders --crease-penalty 0
+atlas elephant_atlas_paper.png --unbounded --rough-borders --crease-penalty 0
 colored elephant_charts_bounded.png
 atlas elephant_atlas_bounded.png
 
@@ -55,15 +55,15 @@ echo "Merge threshold (the paper's charts, tight packing, and the charts on the 
 for N in 3 4 5 6; do
   e="$(eps "$N")"
   echo "  eps_$N = $e"
-  atlas "elephant_atlas_eps$N.png" --threshold "$e" --unbounded --rough-borders
-  colored "elephant_mesh_eps$N.png" --threshold "$e" --unbounded --rough-borders
+  atlas "elephant_atlas_eps$N.png" --threshold "$e" --unbounded --rough-borders --crease-penalty 0
+  colored "elephant_mesh_eps$N.png" --threshold "$e" --unbounded --rough-borders --crease-penalty 0
 done
 
-echo "Pipeline stages on the mesh (the paper's segmentation: --unbounded --rough-borders):"
+echo "Pipeline stages on the mesh (the paper's segmentation: --unbounded --rough-borders --crease-penalty 0):"
 # The tool writes only its final charts: merging disabled (--threshold 1e9)
 # shows the disks after refinement; the default shows the merged patches.
-colored elephant_stage_refined.png --threshold 1e9 --unbounded --rough-borders
-colored elephant_stage_merged.png --unbounded --rough-borders
+colored elephant_stage_refined.png --threshold 1e9 --unbounded --rough-borders --crease-penalty 0
+colored elephant_stage_merged.png --unbounded --rough-borders --crease-penalty 0
 colored elephant_stage_charts.png
 
 echo "Sizes:"

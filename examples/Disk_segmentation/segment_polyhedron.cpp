@@ -77,7 +77,7 @@ int main(int argc, char** argv)
     }
 
   // The three steps in one call, with the same parameters and without the
-  // package's border smoothing (the paper's segmentation): same patches.
+  // package's border smoothing: same patches.
   Patch_map patch_in_one_call = get(CGAL::dynamic_face_property_t<std::size_t>(), mesh);
   const std::size_t count_in_one_call = DS::segment_into_disks(
     mesh, patch_in_one_call, DS::parameters::number_of_seeds(8).number_of_subsamples(5).smooth_borders(false));

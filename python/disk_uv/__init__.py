@@ -126,7 +126,8 @@ def _checked_progress(progress):
 
 def _atlas_options(method, max_angle_distortion, max_area_distortion, max_stretch, max_area_scale,
                    max_stretch_p95, min_convexity, unbounded, rough_borders, resolution, padding, threads, seed, n, k,
-                   threshold, packer, max_chart_faces, use_fallback, max_charts, texels_per_unit, max_pages):
+                   threshold, packer, max_chart_faces, use_fallback, max_charts, texels_per_unit, max_pages,
+                   crease_penalty):
     return {
         "method": method, "max_angle_distortion": max_angle_distortion,
         "max_area_distortion": max_area_distortion, "max_stretch": max_stretch,
@@ -135,7 +136,7 @@ def _atlas_options(method, max_angle_distortion, max_area_distortion, max_stretc
         "rough_borders": bool(rough_borders), "resolution": resolution, "padding": padding, "threads": threads,
         "seed": seed, "n": n, "k": k, "threshold": threshold, "packer": packer,
         "max_chart_faces": max_chart_faces, "use_fallback": bool(use_fallback), "max_charts": max_charts,
-        "texels_per_unit": texels_per_unit, "max_pages": max_pages,
+        "texels_per_unit": texels_per_unit, "max_pages": max_pages, "crease_penalty": crease_penalty,
     }
 
 
@@ -152,7 +153,7 @@ def atlas(vertices, faces=None, method=_disk_uv.default_parameterization_method,
           threshold=_disk_uv.default_merge_threshold, packer="tight",
           max_chart_faces=_disk_uv.default_max_chart_faces, use_fallback=True, max_charts=None, face_groups=None,
           materials=None, progress=None, texels_per_unit=0.0, max_pages=_disk_uv.default_max_pages,
-          crease_penalty=0.0):
+          crease_penalty=_disk_uv.default_crease_penalty):
     """UV atlas of a triangle mesh; the options are those of the ``disk_uv`` tool.
 
     ``atlas([(vertices, faces), ...])`` makes one atlas for several meshes
@@ -173,7 +174,8 @@ def atlas(vertices, faces=None, method=_disk_uv.default_parameterization_method,
         min_convexity: smallest UV area / UV convex hull area of a chart
             holding 3% of the mesh's area or more, 0.8 times it for smaller
             charts (0: no bound).
-        unbounded: no distortion or convexity bound (the paper's charts).
+        unbounded: no distortion or convexity bound (with rough_borders=True and
+            crease_penalty=0: the paper's charts).
         rough_borders: keep the saw-toothed chart borders of the paper (neither smoothed nor straightened).
         resolution, padding: texture side and gap between charts, in texels;
             ``resolution=(width, height)`` for a non-square texture ("tight"
@@ -190,7 +192,7 @@ def atlas(vertices, faces=None, method=_disk_uv.default_parameterization_method,
         n, k, threshold: the segmentation's seeds, subsamples and merge threshold.
         crease_penalty: Voronoi distances across bent edges are 1 + crease_penalty
             (1 - cos(dihedral angle)) times longer, so borders follow creases
-            (0: the paper's geodesic distance).
+            (default 10; 0: the paper's geodesic distance).
         packer: "tight" (one texel density) or "grid" (the paper's).
         max_chart_faces: larger patches are split before parameterization.
         use_fallback: redo invalid charts with other methods (else keep them, reported).
@@ -224,8 +226,7 @@ def atlas(vertices, faces=None, method=_disk_uv.default_parameterization_method,
     options = _atlas_options(method, max_angle_distortion, max_area_distortion, max_stretch, max_area_scale,
                              max_stretch_p95, min_convexity, unbounded, rough_borders, resolution, padding, threads, seed, n,
                              k, threshold, packer, max_chart_faces, use_fallback, max_charts, texels_per_unit,
-                             max_pages)
-    options["crease_penalty"] = crease_penalty
+                             max_pages, crease_penalty)
     options["face_groups"] = face_groups
     options["materials"] = materials
     options["progress"] = _checked_progress(progress)
@@ -260,13 +261,15 @@ def parametrize(vertices, faces, **options):
 
 
 def segment(vertices, faces, n=_disk_uv.default_number_of_seeds, k=_disk_uv.default_number_of_subsamples,
-            threshold=_disk_uv.default_merge_threshold, progress=None, crease_penalty=0.0):
+            threshold=_disk_uv.default_merge_threshold, progress=None,
+            crease_penalty=_disk_uv.default_crease_penalty):
     """The paper's segmentation into topological disks: (F,) uint32 patch ids.
 
     Joint farthest-point sampling of ``n`` seeds and geodesic Voronoi cells,
     regions that are not disks re-sampled with ``k`` seeds, adjacent disks
     merged while their union stays a disk and scores below ``threshold``.
-    ``crease_penalty`` lengthens distances across bent edges as in :func:`atlas`.
+    ``crease_penalty`` lengthens distances across bent edges as in :func:`atlas`
+    (``crease_penalty=0`` gives the paper's segmentation).
     ``progress`` and Ctrl-C work as in :func:`atlas`.
     """
     return _disk_uv.segment(vertices, faces, {"n": n, "k": k, "threshold": threshold,

@@ -486,8 +486,10 @@ def add_atlas_arguments(parser):
     group.add_argument("--max-area-scale", type=float, default=d.default_max_area_scale)
     group.add_argument("--max-stretch-p95", type=float, default=d.default_max_stretch_p95)
     group.add_argument("--min-convexity", type=float, default=d.default_min_convexity)
-    group.add_argument("--unbounded", action="store_true", help="no distortion or convexity bound (the paper's charts)")
+    group.add_argument("--unbounded", action="store_true", help="no distortion or convexity bound (with --rough-borders --crease-penalty 0: the paper's charts)")
     group.add_argument("--rough-borders", action="store_true", help="keep the paper's saw-toothed borders")
+    group.add_argument("--crease-penalty", type=float, default=d.default_crease_penalty,
+                       help="borders follow creases (0: the paper's geodesic distance)")
     group.add_argument("--max-charts", type=int, default=0, help="chart budget per mesh (0: no budget)")
     group.add_argument("--threads", type=int, default=1, help="threads per mesh (default 1: one mesh per core)")
     group.add_argument("--repair", action="store_true", help="repair each mesh's soup before the atlas")
@@ -538,7 +540,7 @@ def main(argv=None):
                          max_area_scale=args.max_area_scale, max_stretch_p95=args.max_stretch_p95,
                          min_convexity=args.min_convexity, unbounded=args.unbounded, rough_borders=args.rough_borders, threads=args.threads,
                          max_charts=args.max_charts or None, texels_per_unit=args.texels_per_unit,
-                         max_pages=args.max_pages)
+                         max_pages=args.max_pages, crease_penalty=args.crease_penalty)
     import disk_uv
     import numpy
     try:

@@ -738,6 +738,7 @@ PYBIND11_MODULE(_disk_uv, m)
   m.attr("default_parameterization_method") = DS::to_string(DS::default_parameterization_method);
   m.attr("default_merge_threshold") = DS::regular_polygon_threshold(DS::default_merge_threshold_sides);
   m.attr("default_number_of_seeds") = DS::default_number_of_seeds;
+  m.attr("default_crease_penalty") = DS::default_crease_penalty;
   m.attr("default_number_of_subsamples") = DS::default_number_of_subsamples;
   m.attr("default_texture_resolution") = DS::default_texture_resolution;
   m.attr("default_padding") = DS::default_padding_in_texels;

@@ -13,6 +13,7 @@ import pytest
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
+import disk_uv  # noqa: E402
 from atlas_checks import obj_atlas_problems  # noqa: E402
 
 DATA = os.environ.get("DISK_UV_DATA", os.path.join(os.path.dirname(__file__), "../../test/Disk_segmentation/data"))
@@ -113,3 +114,11 @@ def test_manifest_and_bad_arguments(tmp_path):
     assert wrong.returncode == 2 and "error: --max-stretch must be > 1" in wrong.stderr, wrong.stderr
     wrong = batch(str(manifest), str(out), "--max-charts", "-1")
     assert wrong.returncode == 2 and "error: --max-charts must be non-negative" in wrong.stderr, wrong.stderr
+    wrong = batch(str(manifest), str(out), "--crease-penalty", "-1")
+    assert wrong.returncode == 2 and "error: --crease-penalty must be a finite number >= 0" in wrong.stderr, wrong.stderr
+    # The paper's distance reaches the module: eight gets the charts atlas() gives it at 0, not the default's.
+    vertices, faces = disk_uv.load(os.path.join(DATA, "eight.off"))
+    paper = disk_uv.atlas(vertices, faces, crease_penalty=0).number_of_charts
+    assert paper != disk_uv.atlas(vertices, faces).number_of_charts
+    flat = batch(str(manifest), str(tmp_path / "paper"), "--crease-penalty", "0", "--workers", "1")
+    assert flat.returncode == 0 and summary(tmp_path / "paper")["eight"]["charts"] == str(paper), flat.stderr

@@ -810,6 +810,44 @@ TEST(Atlas, SelfIntersectingSurfaceGivesAValidAtlas)
   }
 }
 
+namespace {
+
+// Patch ids renumbered in the order of first appearance over the faces, so
+// that two partitions compare equal whatever their numbering.
+std::vector<std::size_t> partition_of(const Mesh& tm, const Patch_map& patch)
+{
+  std::map<std::size_t, std::size_t> renumbered;
+  std::vector<std::size_t> out;
+  for(Mesh::Face_index f : tm.faces())
+    out.push_back(renumbered.emplace(patch[f], renumbered.size()).first->second);
+  return out;
+}
+
+} // namespace
+
+TEST(Atlas, SegmentingThenParameterizingGivesTheChartsOfUvAtlas)
+{
+  // couplingdown is a machined part whose patches are split under the bound:
+  // the splits must use the distance the caller gives parameterize_patches(),
+  // as uv_atlas() uses one distance for both steps.
+  for(double penalty : { 0., DS::default_crease_penalty, 3. })
+  {
+    SCOPED_TRACE("crease_penalty " + std::to_string(penalty));
+    Mesh tm = load("couplingdown.off");
+    Mesh copy = tm;
+    const Atlas at_once = make_atlas(tm, DS::parameters::crease_penalty(penalty));
+
+    Patch_map patch = copy.add_property_map<Mesh::Face_index, std::size_t>("f:steps", 0).first;
+    UV_map uv = copy.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:steps", K::Point_2(0, 0)).first;
+    DS::Merge_tree tree;
+    DS::segment_into_disks(copy, patch, DS::parameters::crease_penalty(penalty).merge_tree(&tree));
+    const DS::Parameterization_report steps =
+      DS::parameterize_patches(copy, patch, uv, DS::parameters::crease_penalty(penalty).merge_tree(&tree));
+    EXPECT_GT(steps.number_of_split_patches, 0u) << "no split: the distance of the splits is not tested";
+    EXPECT_EQ(partition_of(copy, patch), partition_of(tm, at_once.patch));
+  }
+}
+
 TEST(Atlas, SameResultForAnyNumberOfThreads)
 {
   Mesh tm = load("elephant.off");
@@ -1151,7 +1189,8 @@ TEST(Atlas, TightPackingKeepsOneTexelDensityAndBeatsTheGrid)
   // shapes leave their bounding rectangles mostly empty (on
   // elephant-with-holes the rectangles alone covered 0.37 of the square,
   // the grid 0.43: the chart profiles nest).
-  const auto paper = DS::parameters::distortion_bound(DS::Distortion_bound::unbounded()).smooth_borders(false);
+  const auto paper =
+    DS::parameters::distortion_bound(DS::Distortion_bound::unbounded()).smooth_borders(false).crease_penalty(0.);
   const auto bounded = DS::parameters::distortion_bound(DS::Distortion_bound());
   for(const char* name : { "elephant.off", "elephant-with-holes.off", "bones.off", "couplingdown.off" })
   for(int variant = 0; variant < 2; ++variant)

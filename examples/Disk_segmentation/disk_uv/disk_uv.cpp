@@ -447,7 +447,8 @@ void add_options(CLI::App& app, Command_line& line)
                  "smallest UV area / UV convex hull area of a chart holding 3% of the mesh's area or more, "
                  "0.8 times it for smaller charts (0: no bound; packs tighter)")->capture_default_str();
   app.add_flag("--unbounded", options.unbounded,
-               "no distortion or convexity bound: the paper's charts (only invalid ones are redone or split)");
+               "no distortion or convexity bound (with --rough-borders --crease-penalty 0: the paper's charts; "
+               "only invalid ones are redone or split)");
   app.add_flag("--rough-borders", options.rough_borders,
                "keep the saw teeth of chart borders (the paper's segmentation; smoothed and straightened by default)");
   app.add_option("--max-chart-faces", options.max_chart_faces,

@@ -33,8 +33,18 @@ constexpr int default_merge_threshold_sides = 5;
 /// \ingroup PkgDiskSegmentationRef
 /// Whether region borders lose their saw teeth (`smooth_borders`) when the
 /// parameter is not given, in every function that reads it: not in the
-/// paper, whose segmentation `smooth_borders(false)` gives.
+/// paper, whose segmentation `smooth_borders(false)` with `crease_penalty(0)`
+/// gives.
 constexpr bool default_smooth_borders = true;
+
+/// \ingroup PkgDiskSegmentationRef
+/// The `crease_penalty` when none is given: a dual arc across an edge whose
+/// faces' normals are \f$ \theta \f$ apart counts
+/// \f$ 1 + 10 (1 - \cos\theta) \f$ times its length, so that Voronoi cells
+/// and region borders follow creases. Not in the paper, whose distance
+/// `crease_penalty(0)` gives; see \ref DS_Creases in the user manual for the
+/// measurements behind this choice.
+constexpr double default_crease_penalty = 10.;
 
 /// \ingroup PkgDiskSegmentationRef
 /// The `texture_resolution` (texels on a side) of the packers and of the

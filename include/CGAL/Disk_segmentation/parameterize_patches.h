@@ -125,7 +125,7 @@ namespace Disk_segmentation {
 ///     \cgalParamDescription{the distance of the Voronoi cells that split a patch over the bound (see
 ///       `voronoi_fps_segmentation()`); give the value the patches were segmented with}
 ///     \cgalParamType{`double`}
-///     \cgalParamDefault{`0` (the paper's geodesic distance on the dual mesh)}
+///     \cgalParamDefault{`default_crease_penalty` (10); `0` is the paper's geodesic distance on the dual mesh}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{merge_charts}
 ///     \cgalParamDescription{whether adjacent charts are merged, once chosen, when their union is a disk
@@ -217,9 +217,10 @@ Parameterization_report parameterize_patches(const TriangleMesh& tm,
 {
   static_assert(internal::Check_patch_map<FacePatchMap>::value, "");
   static_assert(internal::Check_named_parameters<NamedParameters>::value, "");
-  // The mesh is read through a chain of its maps only: one instantiation for
-  // any chain of values.
-  const internal::Indexed_input<TriangleMesh> input(tm, internal::forward_mesh_parameters(np, parameters::default_values()));
+  // The mesh is read through a chain of its maps and the distance of the
+  // Voronoi splits only: one instantiation for any chain of values.
+  const internal::Indexed_input<TriangleMesh> input(
+    tm, internal::forward_mesh_parameters(np, parameters::crease_penalty(internal::crease_penalty_parameter(np))));
   const Merge_tree* given = internal::merge_tree_parameter(np);
   Merge_tree tree;
   if(given != nullptr)

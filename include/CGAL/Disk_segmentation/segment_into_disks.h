@@ -56,8 +56,9 @@ namespace Disk_segmentation {
 /// lose the saw teeth of their borders before they are merged: a face of
 /// one region with two edges on the border of another moves to it when both
 /// stay disks, which shortens the border (see the manual).
-/// `smooth_borders(false)` gives the paper's segmentation: the three
-/// functions run one after the other.
+/// `smooth_borders(false)` runs the three functions one after the other;
+/// with `crease_penalty(0)` as well (the paper's distance, see
+/// \ref DS_Creases), that is the paper's segmentation.
 ///
 /// @return the number `P` of patches; every patch is a topological disk
 ///

@@ -60,7 +60,7 @@ namespace Disk_segmentation {
 ///       \f$ \theta \f$ is \f$ 1 + k (1 - \cos\theta) \f$ times longer, so that Voronoi cells, and
 ///       the borders of the regions, follow creases (not in the paper; see \ref DS_Creases)}
 ///     \cgalParamType{`double`}
-///     \cgalParamDefault{`0` (the paper's geodesic distance on the dual mesh)}
+///     \cgalParamDefault{`default_crease_penalty` (10); `0` is the paper's geodesic distance on the dual mesh}
 ///     \cgalParamExtra{must be a finite number \f$ \geq 0 \f$}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{random_seed}

@@ -104,6 +104,10 @@ class UV_OT_disk_uv_unwrap(bpy.types.Operator):
         default=0.06, min=0.001, soft_max=1.0)
     unbounded: BoolProperty(
         name="No distortion bound", description="The paper's charts: fewer, more distorted", default=False)
+    crease_penalty: FloatProperty(
+        name="Crease penalty", description="Seams prefer sharp edges: across an edge bent by an angle theta, "
+                                           "distances count 1 + k (1 - cos theta) times (0: the paper's distance)",
+        default=10.0, min=0.0, soft_max=50.0)
     split_by_material: BoolProperty(
         name="Split by material", description="No chart spans two materials of the object", default=True)
     max_charts: IntProperty(
@@ -133,6 +137,7 @@ class UV_OT_disk_uv_unwrap(bpy.types.Operator):
 
     def atlas_options(self):
         return dict(method=self.method, unbounded=self.unbounded, max_angle_distortion=self.max_angle_distortion,
+                    crease_penalty=self.crease_penalty,
                     padding=self.margin,
                     resolution=(self.resolution, self.resolution_height) if self.resolution_height else self.resolution,
                     max_charts=self.max_charts or None,

@@ -35,7 +35,7 @@ struct Atlas_options
   std::size_t number_of_subsamples = default_number_of_subsamples;
   double merge_threshold = regular_polygon_threshold(default_merge_threshold_sides);
   /// Longer dual arcs across bent edges (see `parameters::crease_penalty()`; 0: the paper's distance).
-  double crease_penalty = 0;
+  double crease_penalty = default_crease_penalty;
   /// A name `parameterization_method_from_string()` reads.
   std::string method = to_string(default_parameterization_method);
   /// "tight" or "grid" (see `packing_method_from_string()`).

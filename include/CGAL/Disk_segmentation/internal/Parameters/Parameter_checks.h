@@ -10,6 +10,7 @@
 #define CGAL_DISK_SEGMENTATION_INTERNAL_PARAMETERS_PARAMETER_CHECKS_H
 
 #include <CGAL/Disk_segmentation/Input_error.h>
+#include <CGAL/Disk_segmentation/default_values.h>
 #include <CGAL/Disk_segmentation/parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -47,15 +48,15 @@ std::size_t count_parameter(const T& value, const char* name)
   return static_cast<std::size_t>(value);
 }
 
-// The `crease_penalty` named parameter (0, the paper's geodesic distance,
-// by default): a finite number >= 0.
+// The `crease_penalty` named parameter (`default_crease_penalty` when not
+// given; 0 is the paper's geodesic distance): a finite number >= 0.
 template <typename NamedParameters>
 double crease_penalty_parameter(const NamedParameters& np)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   const double penalty = static_cast<double>(
-    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::crease_penalty), 0.));
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::crease_penalty), default_crease_penalty));
   if(!(penalty >= 0) || !(penalty <= (std::numeric_limits<double>::max)()))
     throw Input_error("crease_penalty must be a finite number >= 0 (got " + std::to_string(penalty) + ")");
   return penalty;
