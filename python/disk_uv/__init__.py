@@ -263,13 +263,14 @@ def parametrize(vertices, faces, **options):
 def segment(vertices, faces, n=_disk_uv.default_number_of_seeds, k=_disk_uv.default_number_of_subsamples,
             threshold=_disk_uv.default_merge_threshold, progress=None,
             crease_penalty=_disk_uv.default_crease_penalty):
-    """The paper's segmentation into topological disks: (F,) uint32 patch ids.
+    """The segmentation into topological disks alone: (F,) uint32 patch ids.
 
     Joint farthest-point sampling of ``n`` seeds and geodesic Voronoi cells,
     regions that are not disks re-sampled with ``k`` seeds, adjacent disks
     merged while their union stays a disk and scores below ``threshold``.
     ``crease_penalty`` lengthens distances across bent edges as in :func:`atlas`
-    (``crease_penalty=0`` gives the paper's segmentation).
+    (``crease_penalty=0``: the paper's distance). Region borders lose their
+    saw teeth before merging, as in :func:`atlas` (not in the paper).
     ``progress`` and Ctrl-C work as in :func:`atlas`.
     """
     return _disk_uv.segment(vertices, faces, {"n": n, "k": k, "threshold": threshold,

@@ -103,7 +103,8 @@ class UV_OT_disk_uv_unwrap(bpy.types.Operator):
         name="Angle distortion bound", description="Largest mean |log(s1/s2)| of a chart",
         default=0.06, min=0.001, soft_max=1.0)
     unbounded: BoolProperty(
-        name="No distortion bound", description="The paper's charts: fewer, more distorted", default=False)
+        name="No distortion bound", description="Fewer, more distorted charts (the paper's, with Crease penalty 0)",
+        default=False)
     crease_penalty: FloatProperty(
         name="Crease penalty", description="Seams prefer sharp edges: across an edge bent by an angle theta, "
                                            "distances count 1 + k (1 - cos theta) times (0: the paper's distance)",
