@@ -10,6 +10,12 @@
 //   BM_parameterize_method/faces:F/method:M
 //                                         the same on one thread with method
 //                                         M (conformal, lscm, mvc, tutte, arap)
+//   BM_parameterize_final_charts/faces:F/threads:T
+//                                         parameterize_patches() without a
+//                                         bound on the charts the defaults
+//                                         end with: each face solved once,
+//                                         the least the parameterization of
+//                                         today's atlas could cost
 //   BM_pack/faces:F/method:M              pack_patches() (M = tight or grid)
 //                                         on the ARAP charts
 //   BM_uv_atlas/faces:F/threads:T         uv_atlas(): segmentation,
@@ -189,6 +195,31 @@ void BM_parameterize(benchmark::State& state, int L, unsigned int threads, DS::P
   parameterization_counters(state, d, report);
 }
 
+// Every chart of the defaults solved once more, with nothing to test: what
+// the descent, merges and reroutes cost is BM_parameterize less this.
+void BM_parameterize_final_charts(benchmark::State& state, int L, unsigned int threads)
+{
+  const Level& d = level_with_charts(L);
+  std::vector<std::size_t> labels(d.faces, 0);
+  std::vector<Point_2> uvs(d.halfedges, Point_2(0, 0));
+  const Patch_map pm = patch_map(d.mesh, labels);
+  const UV_map uvm = uv_map(d.mesh, uvs);
+  DS::Parameterization_report report;
+  for(auto _ : state)
+  {
+    state.PauseTiming();
+    std::copy(d.chart_labels.begin(), d.chart_labels.end(), labels.begin());
+    state.ResumeTiming();
+    report = DS::parameterize_patches(
+      d.mesh, pm, uvm,
+      DS::parameters::number_of_threads(threads).distortion_bound(DS::Distortion_bound::unbounded()));
+    benchmark::DoNotOptimize(uvs.data());
+    benchmark::ClobberMemory();
+  }
+  parameterization_counters(state, d, report);
+  state.counters["patches"] = static_cast<double>(d.charts);
+}
+
 void BM_pack(benchmark::State& state, int L, DS::Packing_method method)
 {
   const Level& d = level_with_charts(L);
@@ -319,6 +350,15 @@ int main(int argc, char** argv)
       const std::string name =
         "BM_parameterize/faces:" + std::to_string(s.second) + "/threads:" + threads_name(t);
       apply_run_policy(benchmark::RegisterBenchmark(name.c_str(), BM_parameterize, s.first, t, arap),
+                       s.second, false);
+    }
+
+  for(const auto& s : sizes)
+    for(unsigned int t : thread_counts)
+    {
+      const std::string name =
+        "BM_parameterize_final_charts/faces:" + std::to_string(s.second) + "/threads:" + threads_name(t);
+      apply_run_policy(benchmark::RegisterBenchmark(name.c_str(), BM_parameterize_final_charts, s.first, t),
                        s.second, false);
     }
 

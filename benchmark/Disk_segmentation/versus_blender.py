@@ -12,7 +12,12 @@ medians and the ratio disk_uv / Blender, and writes every run to --csv.
 
     python3 benchmark/Disk_segmentation/versus_blender.py MESH_OR_FOLDER... \\
         [--disk-uv build/bin/disk_uv] [--blender blender] [--runs 3] \\
-        [--threads 1,2] [--subdivide 0,1,2] [--min-faces 0] [--csv FILE]
+        [--threads 1,2] [--subdivide 0,1,2] [--min-faces 0] [--csv FILE] \\
+        [--variant NAME="DISK_UV OPTIONS"]...
+
+Each --variant runs disk_uv with those options too, in the same rounds
+(e.g. --variant paper="--unbounded --rough-borders --crease-penalty 0");
+without one, disk_uv runs with its defaults only.
 
 Without Blender (`blender` not found), only disk_uv's times are printed.
 Blender: Debian's package `blender`. Nothing here asserts a time.
@@ -22,6 +27,7 @@ import argparse
 import csv
 import json
 import os
+import shlex
 import shutil
 import statistics
 import subprocess
@@ -118,9 +124,13 @@ def mesh_files(inputs):
             yield item
 
 
-def run_disk_uv(tool, obj, threads, report):
+def run_disk_uv(tool, options, obj, threads, report):
     """(total, segment, parameterize, pack) seconds, peak MB, charts, solves per face."""
-    subprocess.run([tool, obj, "-q", "--threads", str(threads), "--report", report], check=True)
+    done = subprocess.run([tool, obj, "-q", "--threads", str(threads), "--report", report] + options,
+                          capture_output=True, text=True)
+    if done.returncode != 0:
+        sys.exit("versus_blender.py: disk_uv %s failed (exit %d): %s" % (
+            " ".join(options) or "with its defaults", done.returncode, done.stderr.strip()[-500:]))
     with open(report) as f:
         r = json.load(f)
     t = r["seconds"]
@@ -148,9 +158,17 @@ def main():
     parser.add_argument("--subdivide", default="0", help="subdivision levels, comma-separated")
     parser.add_argument("--min-faces", type=int, default=0, help="skip meshes with fewer faces")
     parser.add_argument("--csv", help="write every run here")
+    parser.add_argument("--variant", action="append", default=[], metavar='NAME="OPTIONS"',
+                        help="also run disk_uv with these options (repeatable)")
     args = parser.parse_args()
     if args.runs < 1:
         parser.error("--runs must be at least 1")
+    variants = [("defaults", [])]
+    for v in args.variant:
+        name, sep, options = v.partition("=")
+        if not sep or not name or name in dict(variants):
+            parser.error("--variant wants a new NAME=\"OPTIONS\", got " + repr(v))
+        variants.append((name, shlex.split(options)))
     threads = [int(t) for t in args.threads.split(",")]
     levels = [int(l) for l in args.subdivide.split(",")]
     if not os.access(args.disk_uv, os.X_OK):
@@ -159,10 +177,11 @@ def main():
     if blender is None:
         print("Blender not found: disk_uv only", file=sys.stderr)
 
+    keys = [(name, t) for name, _ in variants for t in threads]
     rows = []
-    print("| mesh | faces | threads | disk_uv s | segment s | parameterize s | pack s | solves per face | "
+    print("| mesh | faces | variant | threads | disk_uv s | segment s | parameterize s | pack s | solves per face | "
           "Blender s | ratio | charts | peak MB | KB per face |")
-    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+    print("|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
     with tempfile.TemporaryDirectory() as tmp:
         driver = os.path.join(tmp, "driver.py")
         with open(driver, "w") as f:
@@ -178,7 +197,7 @@ def main():
                 label = name if level == 0 else "%s x4^%d" % (name, level)
                 obj = os.path.join(tmp, "mesh.obj")
                 write_obj(obj, vertices, faces)
-                ours = {t: [] for t in threads}
+                ours = {k: [] for k in keys}
                 theirs, memory, charts, solves = [], {}, {}, {}
                 for run in range(args.runs):
                     # Alternate which tool goes first, so that neither always
@@ -187,25 +206,29 @@ def main():
                     for tool in order:
                         if tool == "blender" and blender is not None:
                             theirs.append(run_blender(blender, driver, obj))
-                            rows.append([label, len(faces), "blender", "", run, theirs[-1]] + [""] * 6)
+                            rows.append([label, len(faces), "blender", "", "", run, theirs[-1]] + [""] * 6)
                         elif tool == "disk_uv":
-                            for t in threads:
-                                stages, mb, n, spf = run_disk_uv(args.disk_uv, obj, t, os.path.join(tmp, "r.json"))
-                                ours[t].append(stages)
-                                memory[t], charts[t], solves[t] = mb, n, spf
-                                rows.append([label, len(faces), "disk_uv", t, run] + list(stages) + [mb, n, spf])
+                            for variant, options in variants:
+                                for t in threads:
+                                    k = (variant, t)
+                                    stages, mb, n, spf = run_disk_uv(args.disk_uv, options, obj, t,
+                                                                     os.path.join(tmp, "r.json"))
+                                    ours[k].append(stages)
+                                    memory[k], charts[k], solves[k] = mb, n, spf
+                                    rows.append([label, len(faces), "disk_uv", variant, t, run] + list(stages)
+                                                + [mb, n, spf])
                 blender_s = statistics.median(theirs) if theirs else float("nan")
-                for t in threads:
-                    s, segment, parameterize, pack = [statistics.median(r[i] for r in ours[t]) for i in range(4)]
-                    print("| %s | %d | %d | %.3f | %.3f | %.3f | %.3f | %.2f | %s | %s | %d | %.0f | %.2f |" % (
-                        label, len(faces), t, s, segment, parameterize, pack, solves[t],
+                for k in keys:
+                    s, segment, parameterize, pack = [statistics.median(r[i] for r in ours[k]) for i in range(4)]
+                    print("| %s | %d | %s | %d | %.3f | %.3f | %.3f | %.3f | %.2f | %s | %s | %d | %.0f | %.2f |" % (
+                        label, len(faces), k[0], k[1], s, segment, parameterize, pack, solves[k],
                         "%.3f" % blender_s if theirs else "-",
-                        "%.2f" % (s / blender_s) if theirs else "-", charts[t], memory[t],
-                        memory[t] * 1024 / len(faces)), flush=True)
+                        "%.2f" % (s / blender_s) if theirs else "-", charts[k], memory[k],
+                        memory[k] * 1024 / len(faces)), flush=True)
     if args.csv:
         with open(args.csv, "w", newline="") as f:
             w = csv.writer(f)
-            w.writerow(["mesh", "faces", "tool", "threads", "run", "seconds", "segment_seconds",
+            w.writerow(["mesh", "faces", "tool", "variant", "threads", "run", "seconds", "segment_seconds",
                         "parameterize_seconds", "pack_seconds", "peak_mb", "charts", "solves_per_face"])
             w.writerows(rows)
 
