@@ -4,7 +4,8 @@
 
     blender -b --factory-startup --python-exit-code 1 --python blender_addon_check.py
 
-Loads a shipped mesh, a quad mesh and a mixed one, runs the operator on one
+Checks that the operator's defaults are the library's, loads a shipped mesh,
+a quad mesh and a mixed one, runs the operator on one
 object, on two at once, from edit mode and on selected faces only, exports
 OBJ files with UVs and checks them with the independent checker
 (atlas_checks.py). Exits non-zero
@@ -78,10 +79,32 @@ def export_and_check(obj, folder, label):
     print("checked", label, "faces", len(obj.data.polygons))
 
 
+def check_defaults_are_the_librarys():
+    """The add-on's properties hold literals (it registers without the module); they must be the library's."""
+    properties = bpy.ops.uv.disk_uv_unwrap.get_rna_type().properties
+    library = disk_uv._disk_uv
+    expected = {
+        "method": library.default_parameterization_method,
+        "max_angle_distortion": library.default_max_angle_distortion,
+        "crease_penalty": library.default_crease_penalty,
+        "margin": library.default_padding,
+        "resolution": library.default_texture_resolution,
+    }
+    for name, value in expected.items():
+        default = properties[name].default
+        if isinstance(value, float):
+            ok = abs(default - value) <= 1e-6 * max(1.0, abs(value))  # Blender stores floats in single precision
+        else:
+            ok = default == value
+        check(ok, "the add-on's default %s is %r, the library's %r" % (name, default, value))
+    print("checked", len(expected), "defaults against the library's")
+
+
 def run():
     check(hasattr(bpy.ops.uv, "disk_uv_unwrap"), "operator not registered")
     check(any(getattr(f, "__name__", "") == "menu_entry" for f in bpy.types.VIEW3D_MT_uv_map._dyn_ui_initialize()),
           "no entry in the UV menu")
+    check_defaults_are_the_librarys()
     folder = tempfile.mkdtemp(prefix="disk_uv_blender_")
     clear_scene()
 
