@@ -172,10 +172,12 @@ void parameterization_counters(benchmark::State& state, const Level& d, const DS
   state.counters["largest_chart"] = faces == 0 ? 0. : static_cast<double>(largest) / static_cast<double>(faces);
 }
 
-// parameterize_patches() with `method` on `threads` threads (0: all).
-void BM_parameterize(benchmark::State& state, int L, unsigned int threads, DS::Parameterization_method method)
+// parameterize_patches() with `np`, each iteration from the patch ids
+// `initial` (a split patch gets new ids, so every iteration starts again).
+template <typename NamedParameters>
+void time_parameterization(benchmark::State& state, const Level& d, const std::vector<std::size_t>& initial,
+                           const NamedParameters& np)
 {
-  const Level& d = level_with_segmentation(L);
   std::vector<std::size_t> labels(d.faces, 0);
   std::vector<Point_2> uvs(d.halfedges, Point_2(0, 0));
   const Patch_map pm = patch_map(d.mesh, labels);
@@ -183,16 +185,22 @@ void BM_parameterize(benchmark::State& state, int L, unsigned int threads, DS::P
   DS::Parameterization_report report;
   for(auto _ : state)
   {
-    // A split patch gets new ids: start every iteration from the segmentation.
     state.PauseTiming();
-    std::copy(d.segment_labels.begin(), d.segment_labels.end(), labels.begin());
+    std::copy(initial.begin(), initial.end(), labels.begin());
     state.ResumeTiming();
-    report = DS::parameterize_patches(d.mesh, pm, uvm,
-                                      DS::parameters::number_of_threads(threads).parameterization_method(method));
+    report = DS::parameterize_patches(d.mesh, pm, uvm, np);
     benchmark::DoNotOptimize(uvs.data());
     benchmark::ClobberMemory();
   }
   parameterization_counters(state, d, report);
+}
+
+// parameterize_patches() with `method` on `threads` threads (0: all).
+void BM_parameterize(benchmark::State& state, int L, unsigned int threads, DS::Parameterization_method method)
+{
+  const Level& d = level_with_segmentation(L);
+  time_parameterization(state, d, d.segment_labels,
+                        DS::parameters::number_of_threads(threads).parameterization_method(method));
 }
 
 // Every chart of the defaults solved once more, with nothing to test: what
@@ -200,23 +208,9 @@ void BM_parameterize(benchmark::State& state, int L, unsigned int threads, DS::P
 void BM_parameterize_final_charts(benchmark::State& state, int L, unsigned int threads)
 {
   const Level& d = level_with_charts(L);
-  std::vector<std::size_t> labels(d.faces, 0);
-  std::vector<Point_2> uvs(d.halfedges, Point_2(0, 0));
-  const Patch_map pm = patch_map(d.mesh, labels);
-  const UV_map uvm = uv_map(d.mesh, uvs);
-  DS::Parameterization_report report;
-  for(auto _ : state)
-  {
-    state.PauseTiming();
-    std::copy(d.chart_labels.begin(), d.chart_labels.end(), labels.begin());
-    state.ResumeTiming();
-    report = DS::parameterize_patches(
-      d.mesh, pm, uvm,
-      DS::parameters::number_of_threads(threads).distortion_bound(DS::Distortion_bound::unbounded()));
-    benchmark::DoNotOptimize(uvs.data());
-    benchmark::ClobberMemory();
-  }
-  parameterization_counters(state, d, report);
+  time_parameterization(
+    state, d, d.chart_labels,
+    DS::parameters::number_of_threads(threads).distortion_bound(DS::Distortion_bound::unbounded()));
   state.counters["patches"] = static_cast<double>(d.charts);
 }
 
