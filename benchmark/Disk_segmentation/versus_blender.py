@@ -168,7 +168,10 @@ def main():
         name, sep, options = v.partition("=")
         if not sep or not name or name in dict(variants):
             parser.error("--variant wants a new NAME=\"OPTIONS\", got " + repr(v))
-        variants.append((name, shlex.split(options)))
+        try:
+            variants.append((name, shlex.split(options)))
+        except ValueError as e:
+            parser.error("--variant %s: %s" % (name, e))
     threads = [int(t) for t in args.threads.split(",")]
     levels = [int(l) for l in args.subdivide.split(",")]
     if not os.access(args.disk_uv, os.X_OK):
