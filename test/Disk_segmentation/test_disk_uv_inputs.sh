@@ -103,6 +103,25 @@ printf 'OFF\n100000000 1 0\n0 0 0\n' > many_vertices.off
 memory_limit_kb=2000000 expect_error "line 2: 100000000 vertices and 1 faces do not fit" many_vertices.off
 { printf 'OFF\n3 1 0\n'; head -c 10000000 /dev/zero | tr '\0' '1'; } > long_line.off
 expect_error "line 3: longer than 1 MiB without a line break" long_line.off
+# 2 GiB (sparse: zeros) without a line break: refused at its first MiB,
+# under a memory limit far below the file's size.
+truncate -s 2G huge_line.obj
+memory_limit_kb=500000 expect_error "line 1: longer than 1 MiB without a line break" huge_line.obj
+{ printf 'ply\nformat ascii 1.0\n'; } > huge_ply_header.ply
+truncate -s 2G huge_ply_header.ply
+memory_limit_kb=500000 expect_error "line 3: longer than 1 MiB without a line break" huge_ply_header.ply
+printf 'solid s\nfacet normal 0 0 1\n' > huge_ascii.stl
+truncate -s 2G huge_ascii.stl
+memory_limit_kb=500000 expect_error "line 3: longer than 1 MiB without a line break" huge_ascii.stl
+rm -f huge_line.obj huge_ply_header.ply huge_ascii.stl
+# Through a pipe that never ends: refused at its first long line, not at
+# the end of the input (the writer stays open).
+mkfifo endless.off
+{ printf 'OFF\n'; head -c 3000000 /dev/zero | tr '\0' '7'; exec sleep 60; } > endless.off 2> /dev/null &
+writer=$!
+expect_error "line 2: longer than 1 MiB without a line break" endless.off --allow-special-input
+kill "$writer" 2> /dev/null
+writer=
 
 # --- each bad file: one line of ours naming the line and the token.
 printf 'ply\nformat ascii\nend_header\n' > ply_bad_format.ply

@@ -371,7 +371,8 @@ Read_changes read_triangle_mesh(const std::string& path, Mesh& mesh, const Read_
   std::vector<std::vector<std::size_t> > polygons;
   {
     // The file's bytes are freed before the mesh is built.
-    const std::string bytes = internal::read_input_file(path, options.allow_special_input, options.max_input_bytes);
+    const std::string bytes =
+      internal::read_input_file(path, options.allow_special_input, options.max_input_bytes, ext);
     internal::read_polygon_soup_from(bytes, ext, path, points, polygons);
   }
   const Read_changes changes = internal::prepare_triangle_soup(points, polygons, options, path);

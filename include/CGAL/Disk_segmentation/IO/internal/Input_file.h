@@ -9,11 +9,13 @@
 #ifndef CGAL_DISK_SEGMENTATION_IO_INTERNAL_INPUT_FILE_H
 #define CGAL_DISK_SEGMENTATION_IO_INTERNAL_INPUT_FILE_H
 
+#include <CGAL/Disk_segmentation/IO/internal/Text_line_guard.h>
 #include <CGAL/Disk_segmentation/IO/internal/Text_scanner.h>
 #include <CGAL/Disk_segmentation/IO/File_error.h>
 
 #include <cerrno>
 #include <cstdint>
+#include <algorithm>
 #include <cstring>
 #include <new>
 #include <string>
@@ -81,9 +83,11 @@ inline std::size_t read_up_to(int fd, std::string& bytes, std::size_t wanted, co
 
 // The whole content of `path`. A regular file is read at its size; with
 // `allow_special_input`, another input (a FIFO, a device, a socket) is read
-// to its end, refused beyond `max_input_bytes`. Throws File_error.
+// to its end, refused beyond `max_input_bytes`. With `format` (a mesh
+// format's extension), a text line longer than max_line_bytes is refused
+// as soon as it is read (Text_line_guard). Throws File_error.
 inline std::string read_input_file(const std::string& path, bool allow_special_input,
-                                   std::uint64_t max_input_bytes)
+                                   std::uint64_t max_input_bytes, const std::string& format = std::string())
 {
   // stat() before open(): opening a FIFO without a writer would block.
   struct stat info;
@@ -106,29 +110,52 @@ inline std::string read_input_file(const std::string& path, bool allow_special_i
     throw File_error("'" + path + "' changed while it was being opened");
 
   std::string bytes;
+  // One byte over a line's limit: a file without a line break is refused
+  // on its first read.
+  const std::size_t chunk = max_line_bytes + 1;
   if(regular)
   {
     // A file that grows while it is read is taken at the size it had.
-    try
+    const std::size_t size = std::size_t(opened.st_size);
+    Text_line_guard guard(path, format, size);
+    // Each pass reads a whole chunk or ends: at most size / chunk + 1 passes.
+    while(bytes.size() < size)
     {
-      bytes.reserve(std::size_t(opened.st_size));
+      const std::size_t wanted = (std::min)(chunk, size - bytes.size());
+      const std::size_t got = read_up_to(fd.get(), bytes, wanted, path);
+      if(!format.empty())
+        guard.check(bytes);
+      if(got < wanted)
+        break;
+      // Room for the whole file once two chunks passed the guard: a file
+      // whose first line, or any line starting in its first MiB, is too
+      // long never gets it.
+      if(bytes.size() >= 2 * chunk && bytes.capacity() < size)
+      {
+        try
+        {
+          bytes.reserve(size);
+        }
+        catch(const std::bad_alloc&)
+        {
+          throw File_error("'" + path + "' (" + std::to_string(opened.st_size) + " bytes) does not fit in memory");
+        }
+      }
     }
-    catch(const std::bad_alloc&)
-    {
-      throw File_error("'" + path + "' (" + std::to_string(opened.st_size) + " bytes) does not fit in memory");
-    }
-    read_up_to(fd.get(), bytes, std::size_t(opened.st_size), path);
     return bytes;
   }
+  Text_line_guard guard(path, format, 0);
   // Each pass that goes on reads a whole chunk, and the input is refused
   // past max_input_bytes: at most max_input_bytes / chunk + 2 passes.
-  const std::size_t chunk = std::size_t(1) << 20;
   for(;;)
   {
     const std::uint64_t room = max_input_bytes - bytes.size();
     // One byte beyond the limit tells a full input from a longer one.
     const std::size_t wanted = std::size_t(room < chunk ? room + 1 : chunk);
-    if(read_up_to(fd.get(), bytes, wanted, path) < wanted)
+    const std::size_t got = read_up_to(fd.get(), bytes, wanted, path);
+    if(!format.empty())
+      guard.check(bytes);
+    if(got < wanted)
       break;
     if(bytes.size() > max_input_bytes)
       throw File_error("'" + path + "' is longer than the limit of " + size_text(max_input_bytes) +
