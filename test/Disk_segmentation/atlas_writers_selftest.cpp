@@ -5,6 +5,7 @@
 // hand-made mesh and reads them back. Exits with 0 when every check passes;
 // its last line is "atlas_writers: N passed, M failed".
 
+#include <CGAL/Disk_segmentation/IO/udim_tiles.h>
 #include <CGAL/Disk_segmentation/IO/write_atlas_GLB.h>
 #include <CGAL/Disk_segmentation/IO/write_atlas_OBJ.h>
 #include <CGAL/Disk_segmentation/IO/write_atlas_PNG.h>
@@ -548,6 +549,55 @@ int main()
     std::ostringstream png;
     CGAL::Disk_segmentation::IO::write_atlas_PNG(png, empty, patch, uv, 8);
     check(png.str().compare(1, 3, "PNG") == 0, "PNG: an empty mesh gives a white picture");
+  }
+
+  // Charts so small that 32-bit floats cannot hold their triangles (valid
+  // in doubles): the GLB writer refuses them and writes no byte.
+  {
+    Test_mesh tiny;
+    build(tiny);
+    for(Halfedge_index h : tiny.mesh.halfedges())
+      if(!tiny.mesh.is_border(h))
+        tiny.uv[h] = Point_2(0.5 + 1e-12 * tiny.uv[h].x(), 0.5 + 1e-12 * tiny.uv[h].y());
+    std::ostringstream out;
+    std::string message;
+    try { CGAL::Disk_segmentation::IO::write_atlas_GLB(out, tiny.mesh, tiny.patch, tiny.uv); }
+    catch(const CGAL::Disk_segmentation::Input_error& e) { message = e.what(); }
+    check(message.find("degenerate or flipped in 32-bit float UVs") != std::string::npos && out.str().empty(),
+          "GLB: triangles that float UVs collapse throw before writing (" + message + ")");
+    // As small at (0, 1), which glTF's flipped v writes near 0: floats hold
+    // them, so they are written.
+    Test_mesh held;
+    build(held);
+    for(Halfedge_index h : held.mesh.halfedges())
+      if(!held.mesh.is_border(h))
+        held.uv[h] = Point_2(1e-12 * held.uv[h].x(), 1. - 1e-12 * held.uv[h].y());
+    std::ostringstream kept;
+    message.clear();
+    try { CGAL::Disk_segmentation::IO::write_atlas_GLB(kept, held.mesh, held.patch, held.uv); }
+    catch(const CGAL::Disk_segmentation::Input_error& e) { message = e.what(); }
+    check(message.empty() && kept.str().compare(0, 4, "glTF") == 0, "GLB: tiny UVs that floats hold are written");
+  }
+
+  // UDIM tiles stop at 1999: a page beyond it is refused, the UVs untouched.
+  {
+    Test_mesh pages;
+    build(pages);
+    std::vector<std::size_t> page_of_chart = { 0, CGAL::Disk_segmentation::IO::max_udim_pages - 1 };
+    CGAL::Disk_segmentation::IO::move_pages_to_udim_tiles(pages.mesh, pages.patch, pages.uv, page_of_chart);
+    check(CGAL::Disk_segmentation::IO::udim_tile(page_of_chart[1]) == 1999, "UDIM: the last page is tile 1999");
+    Test_mesh beyond;
+    build(beyond);
+    const Halfedge_index h = beyond.mesh.halfedge(*beyond.mesh.faces().begin());
+    const Point_2 before = beyond.uv[h];
+    bool threw = false;
+    try
+    {
+      CGAL::Disk_segmentation::IO::move_pages_to_udim_tiles(beyond.mesh, beyond.patch, beyond.uv,
+                                                           { 0, CGAL::Disk_segmentation::IO::max_udim_pages });
+    }
+    catch(const CGAL::Disk_segmentation::Input_error&) { threw = true; }
+    check(threw && beyond.uv[h] == before, "UDIM: a page beyond tile 1999 throws and moves no UV");
   }
 
   if(failed == 0)

@@ -869,7 +869,39 @@ TEST(Packing, FixedTexelDensityThatCannotBePackedThrowsAndWritesNothing)
   EXPECT_NE(m.find("TIGHT"), std::string::npos) << m;
   m = message_of(DS::parameters::texels_per_unit(fit_density).max_number_of_pages(0u));
   EXPECT_NE(m.find("max_number_of_pages"), std::string::npos) << m;
+  // So low that rounding would collapse the charts' triangles (in doubles,
+  // next to the padding's offsets): refused, not packed into a broken atlas.
+  for(double tiny : { 1e-15, 1e-300 })
+  {
+    m = message_of(DS::parameters::texels_per_unit(tiny * fit_density));
+    EXPECT_NE(m.find("degenerate or flipped in the packed UVs"), std::string::npos) << m;
+    EXPECT_NE(m.find("raise texels_per_unit"), std::string::npos) << m;
+  }
   EXPECT_TRUE(snapshot(c) == before) << "a packing that threw moved the UVs";
+}
+
+TEST(Packing, ChartsBelowATexelAreCountedAndKeepTheirOrientation)
+{
+  Case fresh = disk_case();
+  const double fit_density = DS::pack_patches(fresh.mesh, fresh.patch, fresh.uv).texels_per_unit;
+  Case fit_case = disk_case();
+  const DS::Packing_report fit = pack_and_check(fit_case, DS::Packing_method::TIGHT, 1024, 2., fit_density);
+  EXPECT_EQ(fit.number_of_charts_below_a_texel, 0u);
+  // A millionth of the fit: every chart far below a texel, yet every
+  // triangle still positive in doubles.
+  Case tiny = disk_case();
+  const std::vector<Point_2> before = snapshot(tiny);
+  const DS::Packing_report r = DS::pack_patches(tiny.mesh, tiny.patch, tiny.uv,
+                                                DS::parameters::texels_per_unit(1e-6 * fit_density));
+  EXPECT_EQ(r.number_of_charts_below_a_texel, r.number_of_charts);
+  for(auto f : faces(tiny.mesh))
+  {
+    std::vector<Point_2> t;
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, tiny.mesh), tiny.mesh))
+      t.push_back(tiny.uv[h]);
+    EXPECT_GT(signed_area(t[0], t[1], t[2]), 0.);
+  }
+  EXPECT_FALSE(snapshot(tiny) == before);
 }
 
 TEST(Packing, NonTriangleFaceThrows)

@@ -33,6 +33,10 @@ struct Packing_report
   std::vector<std::size_t> page_of_chart;
   /// Per page, the covered fraction of its square.
   std::vector<double> page_efficiency;
+  /// Charts whose longest side is shorter than one texel of the texture
+  /// (e.g. the charts of a tiny mesh packed with huge ones, or a low
+  /// `texels_per_unit`): they hold no texel of their own.
+  std::size_t number_of_charts_below_a_texel = 0;
 };
 
 } // namespace Disk_segmentation

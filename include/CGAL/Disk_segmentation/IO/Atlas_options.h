@@ -13,6 +13,7 @@
 #include <CGAL/Disk_segmentation/Input_error.h>
 #include <CGAL/Disk_segmentation/Parameterization_method.h>
 #include <CGAL/Disk_segmentation/default_values.h>
+#include <CGAL/Disk_segmentation/IO/udim_tiles.h>
 #include <CGAL/Disk_segmentation/uv_atlas.h>
 
 #include <array>
@@ -94,12 +95,17 @@ inline bool parse_texture_size(const std::string& text, unsigned int& width, uns
 
 /// \ingroup PkgDiskSegmentationIO
 /// The named parameters of `uv_atlas()` (and `uv_atlas_of_meshes()`) that
-/// `options` stand for, checked by `check_uv_atlas_parameters()`. Maps and
-/// a progress callback are added by the caller.
+/// `options` stand for, checked by `check_uv_atlas_parameters()`, and
+/// `max_number_of_pages` at most `max_udim_pages` (the front ends write
+/// pages as UDIM tiles). Maps and a progress callback are added by the
+/// caller. Needs no mesh: a front end calls it before it reads any.
 /// \throws Input_error naming the first bad option by its parameter's name
 /// (see `in_user_terms()`)
 inline auto atlas_parameters(const Atlas_options& options)
 {
+  if(options.max_number_of_pages > max_udim_pages)
+    throw Input_error("max_number_of_pages must be at most " + std::to_string(max_udim_pages) +
+                      ": pages are written as the UDIM tiles 1001 to 1999, where common readers stop");
   Parameterization_method method;
   try
   {
@@ -195,6 +201,19 @@ inline std::string in_user_terms(std::string message, Front_end front_end)
 {
   auto is_identifier_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
   bool reworded = false;
+  // A value named as the front end spells it ("packing_method TIGHT" -> "--packer tight").
+  static const std::array<Parameter_name, 2> values = { {
+    { "packing_method TIGHT", "--packer tight", "packer='tight'" },
+    { "packing_method GRID", "--packer grid", "packer='grid'" },
+  } };
+  for(const Parameter_name& value : values)
+    for(std::size_t at = message.find(value.library); at != std::string::npos; at = message.find(value.library, at))
+    {
+      const std::string user = front_end == Front_end::command_line ? value.flag : value.argument;
+      message.replace(at, std::string(value.library).size(), user);
+      at += user.size();
+      reworded = true;
+    }
   for(const Parameter_name& name : parameter_names())
   {
     const std::string library = name.library;

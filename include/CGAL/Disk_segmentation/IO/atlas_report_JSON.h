@@ -49,12 +49,13 @@ inline double peak_rss_mb()
 
 /// \ingroup PkgDiskSegmentationIO
 /// The packing and its pages as JSON: `efficiency`, `texels_per_unit`,
-/// `pages`, `page_efficiency`, `page_of_chart`.
+/// `pages`, `charts_below_a_texel`, `page_efficiency`, `page_of_chart`.
 inline nlohmann::json packing_report_json(const CGAL::Disk_segmentation::Packing_report& p)
 {
   return { { "efficiency", p.efficiency },
            { "texels_per_unit", p.texels_per_unit },
            { "pages", p.number_of_pages },
+           { "charts_below_a_texel", p.number_of_charts_below_a_texel },
            { "page_efficiency", p.page_efficiency },
            { "page_of_chart", p.page_of_chart } };
 }

@@ -22,6 +22,11 @@ namespace Disk_segmentation {
 namespace IO {
 
 /// \ingroup PkgDiskSegmentationIO
+/// The most pages UDIM tiles name for common readers: tiles 1001 to 1999
+/// (Blender's and Maya's UDIM image names stop there).
+constexpr std::size_t max_udim_pages = 999;
+
+/// \ingroup PkgDiskSegmentationIO
 /// The UDIM tile number of page `page` of an atlas: pages go ten to a row,
 /// page `k` to the square \f$ [k \bmod 10, k \bmod 10 + 1] \times
 /// [\lfloor k / 10 \rfloor, \lfloor k / 10 \rfloor + 1] \f$, tile
@@ -46,7 +51,8 @@ inline unsigned int udim_tile(std::size_t page)
 ///        the unit square of each chart's page on entry, in its tile on return
 /// @param page_of_chart the page of every chart, e.g. `Packing_report::page_of_chart`
 ///
-/// @throws Input_error if a face's patch id has no entry in `page_of_chart`;
+/// @throws Input_error if a face's patch id has no entry in `page_of_chart`,
+///         or its page is beyond the last tile, 1999 (`max_udim_pages`);
 ///         `uv` is not written then.
 template <typename TriangleMesh, typename FacePatchMap, typename UVMap>
 void move_pages_to_udim_tiles(const TriangleMesh& mesh, FacePatchMap patch, UVMap uv,
@@ -60,6 +66,10 @@ void move_pages_to_udim_tiles(const TriangleMesh& mesh, FacePatchMap patch, UVMa
     if(chart >= page_of_chart.size())
       throw Input_error("move_pages_to_udim_tiles: chart " + std::to_string(chart) + " has no page (" +
                         std::to_string(page_of_chart.size()) + " pages given)");
+    if(page_of_chart[chart] >= max_udim_pages)
+      throw Input_error("move_pages_to_udim_tiles: chart " + std::to_string(chart) + " is on page " +
+                        std::to_string(page_of_chart[chart]) + ", beyond the last UDIM tile (1999, page " +
+                        std::to_string(max_udim_pages - 1) + ")");
   }
   for(auto f : faces(mesh))
   {

@@ -44,7 +44,9 @@ namespace IO {
 /// @tparam TriangleMesh, FacePatchMap, UVMap as in `write_atlas_OBJ()`
 ///
 /// @throws Input_error if the mesh has no face, a face has fewer than three
-///         corners, a coordinate or a UV is not finite, or the mesh is too
+///         corners, a coordinate or a UV is not finite, a triangle would be
+///         degenerate or flipped in glTF's 32-bit float UVs (charts far
+///         smaller than a texel: nothing is written then), or the mesh is too
 ///         large for a GLB file (4 GiB)
 /// @throws std::runtime_error if tinygltf or the stream fails
 ///

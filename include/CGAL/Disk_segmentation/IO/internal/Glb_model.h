@@ -6,6 +6,7 @@
 
 #include <CGAL/Disk_segmentation/Input_error.h>
 #include <CGAL/Disk_segmentation/IO/internal/Atlas_corners.h>
+#include <CGAL/Disk_segmentation/IO/internal/Float_texcoords.h>
 
 #include <tiny_gltf.h>
 
@@ -67,11 +68,13 @@ inline void fill_positions_and_texcoords(const Atlas_corners& a, Glb_arrays& g)
 }
 
 // Fans of the faces, and per-vertex normals summed from the faces' Newell
-// normals; throws Input_error on a face of fewer than three corners.
+// normals; throws Input_error on a face of fewer than three corners, or on
+// triangles that the float UVs collapse.
 inline void fill_triangles_and_normals(const Atlas_corners& a, Glb_arrays& g)
 {
   const std::size_t n = a.textures.size();
   std::vector<double> normal_sums(3 * n, 0.0);
+  std::size_t collapsed = 0;
   g.indices.reserve(3 * a.number_of_faces());
   for(std::size_t f = 0; f < a.number_of_faces(); ++f)
   {
@@ -93,11 +96,19 @@ inline void fill_triangles_and_normals(const Atlas_corners& a, Glb_arrays& g)
         normal_sums[3 * a.corner_texture[begin + k] + d] += normal[d];
     for(std::size_t k = 1; k + 1 < size; ++k)
     {
-      g.indices.push_back(static_cast<std::uint32_t>(a.corner_texture[begin]));
-      g.indices.push_back(static_cast<std::uint32_t>(a.corner_texture[begin + k]));
-      g.indices.push_back(static_cast<std::uint32_t>(a.corner_texture[begin + k + 1]));
+      const std::array<std::size_t, 3> t = { { a.corner_texture[begin], a.corner_texture[begin + k],
+                                               a.corner_texture[begin + k + 1] } };
+      for(std::size_t corner : t)
+        g.indices.push_back(static_cast<std::uint32_t>(corner));
+      // As written: v flipped.
+      if(collapses_in_float({ { a.textures[t[0]].u, a.textures[t[1]].u, a.textures[t[2]].u } },
+                            { { 1.0 - a.textures[t[0]].v, 1.0 - a.textures[t[1]].v, 1.0 - a.textures[t[2]].v } }))
+        ++collapsed;
     }
   }
+  if(collapsed > 0)
+    throw Input_error("cannot write a glTF file: " + collapsed_in_float_message(collapsed) +
+                      ", or write OBJ, which keeps double precision");
   g.normals.resize(3 * n);
   for(std::size_t i = 0; i < n; ++i)
   {

@@ -271,7 +271,7 @@ std::vector<Chart_similarity> paged_layout(const Chart_set<TriangleMesh>& charts
   auto too_many_pages = [&] {
     std::ostringstream message;
     message << "pack_patches: at texels_per_unit " << s.texels_per_unit << " the charts need more than "
-            << s.max_pages << " pages of " << texture_size(s) << " (max_number_of_pages); lower "
+            << pages_text(s.max_pages) << " of " << texture_size(s) << " (max_number_of_pages); lower "
             << "texels_per_unit or raise texture_resolution or max_number_of_pages";
     return Input_error(message.str());
   };

@@ -121,6 +121,12 @@ inline std::string texture_size(const Packing_settings& s)
   return text.str();
 }
 
+// "1 page", "3 pages".
+inline std::string pages_text(std::size_t pages)
+{
+  return std::to_string(pages) + (pages == 1 ? " page" : " pages");
+}
+
 // The most charts the padding leaves room for, at any scale. TIGHT: the
 // rectangles, grown by the padding on their right and top and so larger
 // than pad x pad, fill [pad, 1] x [pad, aspect]: fewer than
@@ -154,7 +160,7 @@ inline void check_packing_capacity(const Packing_settings& s, std::size_t number
           << " charts on a texture of " << texture_size(s) << " (texture_resolution): it leaves room for "
           << static_cast<std::size_t>(capacity) << " at most";
   if(s.max_pages > 1)
-    message << " on " << s.max_pages << " pages (max_number_of_pages)";
+    message << " on " << pages_text(s.max_pages) << " (max_number_of_pages)";
   throw Input_error(message.str());
 }
 

@@ -17,7 +17,9 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
+#include <sstream>
 #include <vector>
 
 namespace CGAL {
@@ -51,18 +53,49 @@ Packing_report pack_checked_patches(const TriangleMesh& tm, FacePatchMap face_pa
   // The layouts are in units of the page's width; v is divided by the
   // page's aspect so that each page is the unit square of its UVs (on a
   // non-square texture, each chart is a similar copy in texels, not in UVs).
+  // The new UVs are checked before any is written: a density so low that
+  // rounding collapses a triangle leaves uv_map as it was.
   const double aspect = page_aspect(settings);
-  // Every halfedge of a face is written once, so nothing is moved twice.
+  std::vector<UV_point> packed;
+  packed.reserve(3 * charts.faces.size());
+  std::size_t collapsed = 0;
   for(std::size_t i = 0; i < charts.faces.size(); ++i)
   {
     const std::size_t p = charts.patch_of[i];
     const Chart_similarity& sim = placement[p];
+    std::array<Packing_point, 3> before, after;
+    std::size_t j = 0;
     for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(charts.faces[i], tm), tm))
     {
-      const Packing_point q =
-        sim.rotation(relative_to(to_packing_point(get(uv_map, h)), charts.origin[p]));
-      put(uv_map, h, UV_point(sim.scale * q.x + sim.tx, (sim.scale * q.y + sim.ty) / aspect));
+      before[j] = relative_to(to_packing_point(get(uv_map, h)), charts.origin[p]);
+      const Packing_point q = sim.rotation(before[j]);
+      after[j] = Packing_point{ sim.scale * q.x + sim.tx, (sim.scale * q.y + sim.ty) / aspect };
+      packed.push_back(UV_point(after[j].x, after[j].y));
+      ++j;
     }
+    // A similarity keeps orientations: only rounding can take one away.
+    if(packing_cross(before[0], before[1], before[2]) > 0. && !(packing_cross(after[0], after[1], after[2]) > 0.))
+      ++collapsed;
+  }
+  if(collapsed > 0)
+  {
+    std::ostringstream message;
+    message << "pack_patches: " << collapsed << " triangles of the charts would be degenerate or flipped in the "
+            << "packed UVs: the charts are too small for double precision";
+    if(settings.texels_per_unit > 0.)
+      message << " at texels_per_unit " << settings.texels_per_unit << "; raise texels_per_unit";
+    throw Input_error(message.str());
+  }
+  // Every halfedge of a face is written once, so nothing is moved twice.
+  std::size_t corner = 0;
+  for(std::size_t i = 0; i < charts.faces.size(); ++i)
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(charts.faces[i], tm), tm))
+      put(uv_map, h, packed[corner++]);
+  for(std::size_t p = 0; p < charts.size(); ++p)
+  {
+    const double side = placement[p].scale * (std::max)(charts.box[p].width(), charts.box[p].height());
+    if(side * settings.resolution < 1.)
+      ++report.number_of_charts_below_a_texel;
   }
   report.number_of_pages = charts.size() == 0 ? 1 : *std::max_element(page_of_chart.begin(), page_of_chart.end()) + 1;
   report.page_efficiency.assign(report.number_of_pages, 0.);
