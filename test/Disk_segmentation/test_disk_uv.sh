@@ -105,21 +105,21 @@ expect_error 1 "4 vertices" "$work/quad.off"
 expect_error 1 "refers to vertex|not a valid" "$work/badindex.off"
 expect_error 1 "not manifold" "$work/nonmanifold_edge.off"
 expect_error 1 "oriented inconsistently" "$work/flipped.off"
-expect_error 1 "-n/--seeds must be at least 1" "$data/elephant.off" -n 0
-expect_error 1 "-k/--subsamples must be at least 2" "$data/elephant.off" -k 1
-expect_error 1 "--threshold must be" "$data/elephant.off" --threshold -1
-expect_error 1 "--crease-penalty must be a finite number >= 0" "$data/elephant.off" --crease-penalty -1
-expect_error 1 "unknown parameterization method" "$data/elephant.off" --method harmonic2
-expect_error 1 "unknown packer" "$data/elephant.off" --packer best
-expect_error 1 "--resolution must be at least 1" "$data/elephant.off" --resolution 0
-expect_error 1 "padding" "$data/elephant.off" --padding -3
+expect_error 2 "-n/--seeds must be at least 1" "$data/elephant.off" -n 0
+expect_error 2 "-k/--subsamples must be at least 2" "$data/elephant.off" -k 1
+expect_error 2 "--threshold must be" "$data/elephant.off" --threshold -1
+expect_error 2 "--crease-penalty must be a finite number >= 0" "$data/elephant.off" --crease-penalty -1
+expect_error 2 "unknown parameterization method" "$data/elephant.off" --method harmonic2
+expect_error 2 "unknown packer" "$data/elephant.off" --packer best
+expect_error 2 "--resolution must be at least 1" "$data/elephant.off" --resolution 0
+expect_error 2 "padding" "$data/elephant.off" --padding -3
 expect_error 2 "" "$data/elephant.off" -n abc
 expect_error 2 "" "$data/elephant.off" --no-such-option
 # NaN: the reader may refuse the number or the checker names it; either way a clear error.
 "$tool" "$work/nan.off" > /dev/null 2> "$work/err.txt"
 [ $? -eq 1 ] && grep -qiE "non-finite|not a valid" "$work/err.txt" && pass || fail "NaN input: $(cat "$work/err.txt")"
 
-expect_error 1 "--max-chart-faces must be" "$data/elephant.off" --max-chart-faces 0
+expect_error 2 "--max-chart-faces must be" "$data/elephant.off" --max-chart-faces 0
 expect_error 2 "--max-charts: '-1' is not a non-negative" "$data/elephant.off" --max-charts -1
 # A chart budget: met (as many charts as asked) or, when no merge is left, a
 # warning; the report says which.
@@ -149,6 +149,10 @@ expect_error 1 "--material-ids: .* has 10 ids for 5558 faces" "$data/elephant.of
 printf '0\n1\nx2\n' > "$work/bad_ids.txt"
 expect_error 1 "--material-ids: .* line 3: 'x2' is not an integer" "$data/elephant.off" --material-ids "$work/bad_ids.txt"
 expect_error 1 "--material-ids: .*cannot open" "$data/elephant.off" --material-ids "$work/no_such_ids.txt"
+printf 'OFF\n6 8 0\n1 0 0\n-1 0 0\n0 1 0\n0 -1 0\n0 0 1\n0 0 -1\n3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n3 0 3 5\n' > "$work/x8.off"
+{ printf '\357\273\277'; seq 1 8; } > "$work/bom_ids.txt"
+expect_error 1 "--material-ids: .* starts with a UTF-8 byte-order mark \(BOM\)" "$work/x8.off" \
+  --material-ids "$work/bom_ids.txt"
 # A texture too small for the charts and their padding: packed, and said.
 "$tool" "$data/elephant.off" --resolution 32 -o "$work/small.obj" > /dev/null 2> "$work/err.txt"
 [ $? -eq 0 ] && grep -qE "warning: the charts cover only [0-9.]+% of the texture: at --resolution 32, --padding 2" \
@@ -198,17 +202,46 @@ sys.exit(0 if size == (2048, 512) and uv and all(0 <= u <= 1 and 0 <= v <= 1 for
          and p['efficiency'] > 0.3 and p['pages'] == 1 else 1)" && [ ! -s "$work/err.txt" ] \
   && pass || fail "--resolution 2048x512: $(cat "$work/err.txt")"
 expect_error 2 "is not a non-negative integer or WIDTHxHEIGHT" "$data/elephant.off" --resolution 2048x
-expect_error 1 "--resolution 512x256 is not square: .*--packer tight" "$data/elephant.off" --resolution 512x256 \
+expect_error 2 "--resolution 512x256 is not square: .*--packer tight" "$data/elephant.off" --resolution 512x256 \
   --packer grid
-expect_error 1 "--resolution \(its height\) must be at least 1" "$data/elephant.off" --resolution 512x0
+expect_error 2 "--resolution \(its height\) must be at least 1" "$data/elephant.off" --resolution 512x0
 # The same UDIM tiles without the pictures.
 "$tool" "$data/elephant.off" --texels-per-unit "$density" -o "$work/pages_only.obj" -q 2> "$work/err.txt"
 cmp -s "$work/pages.obj" "$work/pages_only.obj" && pass || fail "the OBJ's UDIM tiles depend on --atlas-png"
 expect_error 1 "patch #[0-9]+ is [0-9]+ x [0-9]+ texels and does not fit a page" "$data/elephant.off" \
-  --texels-per-unit 100000 --max-pages 1000000000
+  --texels-per-unit "$(python3 -c "print(10 * $density)")" --max-pages 999
 expect_error 1 "need more than 2 pages .*--max-pages" "$data/elephant.off" --texels-per-unit "$density" --max-pages 2
-expect_error 1 "--texels-per-unit must be a finite number" "$data/elephant.off" --texels-per-unit -1
-expect_error 1 "--texels-per-unit needs --packer" "$data/elephant.off" --texels-per-unit 100 --packer grid
+expect_error 2 "--texels-per-unit must be a finite number" "$data/elephant.off" --texels-per-unit -1
+expect_error 2 "--texels-per-unit needs --packer tight " "$data/elephant.off" --texels-per-unit 100 --packer grid
+# Every bad command-line value is a usage error (2), before any input is read.
+expect_error 2 "--max-pages must be at least 1" "$work/no_such.off" --max-pages 0
+expect_error 2 "--max-pages must be at most 999: .*UDIM tiles 1001 to 1999" "$work/no_such.off" --max-pages 1000
+expect_error 2 "--resolution must be at least 1" "$work/no_such.off" --resolution 0x0
+expect_error 2 "--texels-per-unit: the value is empty" "$data/elephant.off" --texels-per-unit ""
+expect_error 2 "--padding: '1x' is not a number" "$data/elephant.off" --padding 1x
+expect_error 1 "need more than 1 page of" "$data/elephant.off" --texels-per-unit "$density" --max-pages 1
+# A density at which rounding collapses triangles: refused, nothing
+# written, whatever the output's precision (double in OBJ, float in glTF).
+expect_error 1 "too small for double precision at --texels-per-unit 1e-13; raise --texels-per-unit" \
+  "$data/elephant.off" --texels-per-unit 1e-13 -o "$work/never.obj"
+expect_error 1 "too small for double precision" "$data/elephant.off" --texels-per-unit 1e-300 -o "$work/never.obj"
+expect_error 1 "glTF file: [0-9]+ triangles .* degenerate or flipped in 32-bit float UVs.*raise --texels-per-unit" \
+  "$data/elephant.off" --texels-per-unit 1e-3 -o "$work/never.obj" --glb "$work/never.glb"
+[ -e "$work/never.obj" ] || [ -e "$work/never.glb" ] && fail "an atlas was written at a density its UVs cannot hold" || pass
+# OBJ keeps doubles: written, every triangle still positive, and the
+# charts below a texel are said.
+"$tool" "$data/elephant.off" --texels-per-unit 1e-3 -o "$work/tiny.obj" > /dev/null 2> "$work/err.txt"
+python3 -c "
+import sys
+vt, bad = [], 0
+for line in open('$work/tiny.obj'):
+    f = line.split()
+    if f and f[0] == 'vt': vt.append((float(f[1]), float(f[2])))
+    elif f and f[0] == 'f':
+        (a, b), (c, d), (e, g) = [vt[int(x.split('/')[1]) - 1] for x in f[1:4]]
+        bad += not (c - a) * (g - b) - (d - b) * (e - a) > 0
+sys.exit(1 if bad or not vt else 0)" && grep -q "warning: 59 of 59 charts are smaller than one texel" "$work/err.txt" \
+  && pass || fail "--texels-per-unit 1e-3 OBJ: $(cat "$work/err.txt")"
 # Several inputs, one atlas: each mesh keeps the charts it gets alone.
 "$tool" "$data/elephant.off" --patch-ids "$work/alone_a.txt" > /dev/null 2>&1
 "$tool" "$data/eight.off" --patch-ids "$work/alone_b.txt" > /dev/null 2>&1
@@ -225,7 +258,7 @@ ok = both == a + [first + x for x in b] and first == max(a) + 1 and r['charts'] 
 ok = ok and len(r['inputs']) == 2 and sum(l.startswith('f ') for l in open('$work/both.obj')) == len(both)
 sys.exit(0 if ok else 1)" && pass || fail "two inputs: not the charts each gets alone, in one atlas"
 expect_error 1 "cannot open .*no_such.off" "$data/elephant.off" "$work/no_such.off"
-expect_error 1 "--material-ids takes one INPUT, not 2" "$data/elephant.off" "$data/eight.off" \
+expect_error 2 "--material-ids takes one INPUT, not 2" "$data/elephant.off" "$data/eight.off" \
   --material-ids "$work/materials.txt"
 # Polygons: with --triangulate, a quad split between charts is moved whole.
 python3 -c "
@@ -330,6 +363,59 @@ for signal in INT TERM; do
     && pass || fail "SIG$signal: message '$(cat "$work/err.txt")'"
   left=$(ls -a "$work" | grep "signal" | grep -vx "signal.off")
   [ -z "$left" ] && pass || fail "SIG$signal: an output or temporary was left: $left"
+done
+# The same in the writing, with many outputs (one picture per page: more
+# than the 16 temporaries an earlier version could remove): the run stops
+# at its next block written, every temporary file is removed and the same
+# line is printed; a second signal ends it at once, also removing them all.
+# The OBJ goes to a FIFO held open but not read, so the tool waits in that
+# write (write-through outputs come after every temporary file) until the
+# test has sent its signals.
+mkdir -p "$work/w"
+python3 -c "
+n = 2000
+lines = ['OFF', '%d %d 0' % (3 * n, n)]
+for i in range(n):
+    x, y = 3.0 * (i % 50), 3.0 * (i // 50)
+    lines += ['%g %g 0' % (x, y), '%g %g 0' % (x + 1, y), '%g %g 0' % (x + .5, y + .866)]
+lines += ['3 %d %d %d' % (3 * i, 3 * i + 1, 3 * i + 2) for i in range(n)]
+open('$work/w/triangles.off', 'w').write('\n'.join(lines) + '\n')"
+temporaries() { ls -A "$work/w" | grep -c 'disk_uv-'; }
+for signals in "INT" "INT TERM"; do
+  rm -f "$work/w/fifo.obj"
+  mkfifo "$work/w/fifo.obj"
+  exec 3<> "$work/w/fifo.obj"
+  "$tool" "$work/w/triangles.off" --resolution 64 --padding 1 --texels-per-unit 5 -o "$work/w/fifo.obj" \
+    --atlas-png "$work/w/page.png" --glb "$work/w/atlas.glb" --report "$work/w/report.json" -q \
+    > /dev/null 2> "$work/err.txt" &
+  pid=$!
+  # Waiting for the temporaries to stop growing: the tool then waits on the FIFO.
+  last=-1
+  for i in $(seq 1 600); do
+    now=$(temporaries)
+    [ "$now" -gt 16 ] && [ "$now" -eq "$last" ] && break
+    last=$now
+    sleep 0.5
+  done
+  [ "$now" -gt 16 ] && pass || fail "signal while writing: only $now temporaries before the signal"
+  for signal in $signals; do kill -s "$signal" "$pid"; sleep 0.3; done
+  cat <&3 > /dev/null &
+  reader=$!
+  wait "$pid"
+  status=$?
+  kill "$reader" 2> /dev/null
+  exec 3>&-
+  last_signal=${signals##* }
+  expected=$((128 + $(kill -l "$last_signal")))
+  [ "$status" -eq "$expected" ] && pass || fail "SIG$signals while writing: exit status $status, expected $expected"
+  if [ "$signals" = INT ]; then
+    message="^disk_uv: stopped by SIGINT.* during the writing of the outputs; no output was written$"
+  else
+    message="^disk_uv: stopped at once by a second signal; its temporary files were removed$"
+  fi
+  grep -q "$message" "$work/err.txt" && pass || fail "SIG$signals while writing: message '$(cat "$work/err.txt")'"
+  left=$(ls -A "$work/w" | grep -v -x -e triangles.off -e fifo.obj)
+  [ -z "$left" ] && pass || fail "SIG$signals while writing: left $(echo "$left" | wc -l) files: $(echo "$left" | head -3)"
 done
 set +m
 

@@ -7,7 +7,7 @@
 # usage: test_disk_uv_outputs.sh PATH/TO/disk_uv DATA_DIR
 set -u
 tool=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
-data=$2
+data=$(cd "$2" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work" || exit 1
@@ -66,6 +66,20 @@ ln x.off hard.off
 expect_refused 1 "is the input file" x.off -o hard.off
 same_content x.off ../reference.off "output through a hard link"
 rm -f l.off hard.off
+# Every file the run reads is protected: the --material-ids file too.
+seq 1 8 > ids.txt
+cp ids.txt ../ids.reference
+for spelling in "ids.txt" "./ids.txt" "$work/dir/ids.txt" "../dir/ids.txt"; do
+  for option in -o --report --patch-ids --glb --colored --atlas-png; do
+    expect_refused 1 "cannot write $option '.*': it is the --material-ids file" x.off --material-ids ids.txt \
+      "$option" "$spelling"
+    same_content ids.txt ../ids.reference "$option $spelling over --material-ids"
+  done
+done
+ln ids.txt ids_hard.txt
+expect_refused 1 "it is the --material-ids file" x.off --material-ids ids.txt -o ids_hard.txt
+same_content ids.txt ../ids.reference "-o through a hard link to --material-ids"
+rm -f ids.txt ids_hard.txt
 cd "$work"
 
 # --- 2. two outputs on one file: refused before any work
@@ -84,7 +98,7 @@ cp out.obj out.reference
 echo "old report" > r.json
 expect_refused 1 "folder '/missing/dir' does not exist" dir/x.off -o out.obj --report /missing/dir/r.json
 same_content out.obj out.reference "missing output folder"
-expect_refused 1 "resolution between 1 and" dir/x.off -o out.obj --atlas-png a.png --resolution 20000
+expect_refused 2 "resolution between 1 and" dir/x.off -o out.obj --atlas-png a.png --resolution 20000
 same_content out.obj out.reference "too large a PNG"
 [ -s out.txt ] && fail "work was done before refusing the PNG resolution" || pass
 # A write that fails after other outputs were written: nothing is replaced.
@@ -139,8 +153,8 @@ for bad in "-n -1" "--seeds=-1" "-n 99999999999999999999999" "--max-chart-faces 
   [ -e ids.txt ] && fail "'$bad' wrote an output" || pass
 done
 # Parameters are checked before the input is read.
-expect_refused 1 "^disk_uv: error: -k/--subsamples must be at least 2" missing.off -k 1
-expect_refused 1 "^disk_uv: error: --padding must be" missing.off --padding -1
+expect_refused 2 "^disk_uv: error: -k/--subsamples must be at least 2" missing.off -k 1
+expect_refused 2 "^disk_uv: error: --padding must be" missing.off --padding -1
 # A good run still writes everything.
 run dir/x.off -o good.obj --report good.json --patch-ids good.txt && pass || fail "good run failed: $(cat err.txt)"
 [ "$(wc -l < good.txt)" -eq 8 ] && pass || fail "patch ids not written"
@@ -166,10 +180,36 @@ run dir/x.off -o t.obj && pass || fail "run with stale temporaries failed: $(cat
 [ -e ".u.obj.disk_uv-$dead-0" ] && pass || fail "another output's temporary was removed"
 [ -e ".t.obj.disk_uv-x-0" ] && pass || fail "a file not named as a temporary was removed"
 rm -f ".t.obj.disk_uv-$$-0" ".u.obj.disk_uv-$dead-0" ".t.obj.disk_uv-x-0"
+# A killed run's temporaries of page pictures go with the next run to that
+# picture, whatever the pages either run had; other files stay.
+mkdir -p pages
+touch "pages/.p.1007.png.disk_uv-$dead-0" "pages/.p.png.disk_uv-$dead-3" "pages/.q.1007.png.disk_uv-$dead-0" \
+  "pages/.p.1007.png.disk_uv-$$-0" "pages/.p.10077.png.disk_uv-$dead-0"
+run dir/x.off --atlas-png pages/p.png && pass || fail "run beside page temporaries failed: $(cat err.txt)"
+[ -e "pages/.p.1007.png.disk_uv-$dead-0" ] || [ -e "pages/.p.png.disk_uv-$dead-3" ] \
+  && fail "a dead run's page-picture temporary was left: $(ls -A pages)" || pass
+[ -e "pages/.q.1007.png.disk_uv-$dead-0" ] && [ -e "pages/.p.1007.png.disk_uv-$$-0" ] \
+  && [ -e "pages/.p.10077.png.disk_uv-$dead-0" ] && pass || fail "another picture's or a live run's temporary was removed"
+# Page pictures that are not of this atlas (an earlier run's, with more
+# pages) stay, and are said: a UDIM reader would take them for its pages.
+touch pages/p.1001.png pages/p.1003.png pages/p.0999.png pages/p.1001.jpg
+run dir/x.off --atlas-png pages/p.png && pass || fail "run beside page pictures failed: $(cat err.txt)"
+grep -q "warning: 2 UDIM page pictures not of this atlas are beside --atlas-png 'pages/p.png' (p.1001.png, p.1003.png)" \
+  err.txt && [ -e pages/p.1001.png ] && [ -e pages/p.1003.png ] && pass \
+  || fail "earlier page pictures not said or removed: $(cat err.txt)"
+rm -rf pages
+# Several inputs: the chart budget is each input's, and said; a tiny mesh
+# among large ones gets charts below a texel, and said.
+awk 'NR <= 2 || NF != 3 || /^3 / { print; next } { print $1 * 1e-6, $2 * 1e-6, $3 * 1e-6 }' dir/x.off > tiny.off
+run "$data/eight.off" tiny.off --max-charts 2 -o both.obj && pass || fail "two inputs failed: $(cat err.txt)"
+grep -qE "warning: [0-9]+ charts in all: --max-charts \(2\) is a budget for each of the 2 inputs" err.txt \
+  && grep -qE "warning: [0-9]+ of [0-9]+ charts are smaller than one texel" err.txt \
+  && pass || fail "per-input budget or sub-texel charts not said: $(cat err.txt)"
+
 # Messages name the options as typed, not the library's parameters.
 expect_refused 1 "^disk_uv: error: --padding \(3\) is too large" dir/x.off --resolution 8 --padding 3
-expect_refused 1 "^disk_uv: error: --max-stretch must be > 1" dir/x.off --max-stretch 0.5
-expect_refused 1 "^disk_uv: error: -n/--seeds must be at least 1" dir/x.off -n 0
+expect_refused 2 "^disk_uv: error: --max-stretch must be > 1" dir/x.off --max-stretch 0.5
+expect_refused 2 "^disk_uv: error: -n/--seeds must be at least 1" dir/x.off -n 0
 
 echo "disk_uv_outputs: $passed passed, $failures failed"
 [ "$failures" -eq 0 ]

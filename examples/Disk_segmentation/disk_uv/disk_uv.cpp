@@ -32,6 +32,7 @@
 #include <CGAL/Disk_segmentation/IO/write_atlas_OBJ.h>
 #include <CGAL/Disk_segmentation/IO/write_atlas_PNG.h>
 #include "output_files.h"
+#include "stop_signals.h"
 
 #include <CGAL/Disk_segmentation.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
@@ -42,17 +43,21 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
 #include <csignal>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <limits>
 #include <string>
 #include <string_view>
+#include <set>
 #include <vector>
+#include <dirent.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -104,6 +109,10 @@ std::vector<std::int64_t> read_material_ids(const std::string& path, std::size_t
   {
     throw DS_IO::File_error(std::string("--material-ids: ") + e.what());
   }
+  // An editor's UTF-8 byte-order mark would read as part of the first id.
+  if(bytes.compare(0, 3, "\xEF\xBB\xBF") == 0)
+    throw disk_uv::Tool_error("--material-ids: '" + path + "' starts with a UTF-8 byte-order mark (BOM); save it "
+                              "without one (as plain ASCII)");
   std::vector<std::int64_t> ids;
   ids.reserve(faces);
   std::size_t line_number = 0, begin = 0;
@@ -162,15 +171,87 @@ void warn_if_sparse(const DS::Packing_report& packing, std::size_t charts, const
                100 * packing.efficiency, resolution.c_str(), padding, charts);
 }
 
+// Charts below a texel hold no texel of their own: said, as the user may
+// not look at every chart (a tiny mesh among large ones, a low density).
+void warn_of_charts_below_a_texel(const DS::Packing_report& packing, const std::string& resolution)
+{
+  const std::size_t tiny = packing.number_of_charts_below_a_texel;
+  if(tiny == 0)
+    return;
+  std::fprintf(stderr,
+               "disk_uv: warning: %zu of %zu charts are smaller than one texel of a --resolution %s texture%s: "
+               "they get no texel of their own\n",
+               tiny, packing.number_of_charts, resolution.c_str(),
+               packing.texels_per_unit > 0 ? " at this --texels-per-unit" : "");
+}
+
+// `path` split before the extension of its file name: "out/atlas.png" ->
+// ("out/atlas", ".png"); ("out/atlas", "") without an extension.
+std::pair<std::string, std::string> split_extension(const std::string& path)
+{
+  const std::size_t slash = path.find_last_of('/');
+  const std::size_t dot = path.find_last_of('.');
+  if(dot == std::string::npos || (slash != std::string::npos && dot <= slash + 1) || dot == 0)
+    return { path, std::string() };
+  return { path.substr(0, dot), path.substr(dot) };
+}
+
 // `path` with the UDIM tile before its extension: "atlas.png" ->
 // "atlas.1002.png" (the names Blender's UDIM images read).
 std::string page_file_name(const std::string& path, unsigned int tile)
 {
-  const std::size_t slash = path.find_last_of('/');
-  const std::size_t dot = path.find_last_of('.');
-  const bool has_extension = dot != std::string::npos && (slash == std::string::npos || dot > slash + 1);
-  const std::string stem = has_extension ? path.substr(0, dot) : path;
-  return stem + "." + std::to_string(tile) + (has_extension ? path.substr(dot) : std::string());
+  const auto parts = split_extension(path);
+  return parts.first + "." + std::to_string(tile) + parts.second;
+}
+
+// The UDIM tile in `name` if it is the file name of a page picture of the
+// picture named `picture` ("atlas.1004.png" for "atlas.png"), else 0.
+unsigned int page_picture_tile(const std::string& name, const std::string& picture)
+{
+  const auto parts = split_extension(picture);
+  const std::string& stem = parts.first;
+  const std::string& extension = parts.second;
+  if(name.size() != stem.size() + 5 + extension.size() || name.compare(0, stem.size(), stem) != 0 ||
+     name[stem.size()] != '.' || name.compare(stem.size() + 5, extension.size(), extension) != 0)
+    return 0;
+  const std::string digits = name.substr(stem.size() + 1, 4);
+  if(digits.find_first_not_of("0123456789") != std::string::npos)
+    return 0;
+  const unsigned int tile = static_cast<unsigned int>(std::stoul(digits));
+  return tile >= DS_IO::udim_tile(0) && tile <= DS_IO::udim_tile(DS_IO::max_udim_pages - 1) ? tile : 0;
+}
+
+// Page pictures beside --atlas-png that this run did not write (an earlier
+// run's, with more pages): a UDIM reader would take them as pages of this
+// atlas. Said, not removed: they are the user's files.
+void warn_of_other_page_pictures(const std::string& png_path, const std::vector<std::string>& written)
+{
+  const std::string folder = disk_uv::internal::directory_of(png_path);
+  const std::string picture = disk_uv::internal::file_name_of(png_path);
+  std::set<std::string> ours;
+  for(const std::string& path : written)
+    ours.insert(disk_uv::internal::file_name_of(path));
+  std::vector<std::string> others;
+  if(DIR* dir = ::opendir(folder.c_str()))
+  {
+    while(const dirent* entry = ::readdir(dir))
+      if(page_picture_tile(entry->d_name, picture) != 0 && ours.count(entry->d_name) == 0)
+        others.push_back(entry->d_name);
+    ::closedir(dir);
+  }
+  if(others.empty())
+    return;
+  std::sort(others.begin(), others.end());
+  std::string names;
+  for(std::size_t i = 0; i < others.size() && i < 3; ++i)
+    names += (i ? ", " : "") + others[i];
+  if(others.size() > 3)
+    names += ", ...";
+  std::fprintf(stderr,
+               "disk_uv: warning: %zu UDIM page %s not of this atlas %s beside --atlas-png '%s' (%s): a UDIM "
+               "reader takes them for pages of this atlas; remove them\n",
+               others.size(), others.size() == 1 ? "picture" : "pictures", others.size() == 1 ? "is" : "are",
+               png_path.c_str(), names.c_str());
 }
 
 void print_pages(const DS::Packing_report& packing, const std::vector<std::string>& pictures, bool quiet)
@@ -327,6 +408,18 @@ const CLI::Validator texture_size(
   },
   "N|WxH");
 
+// CLI11 reads an empty value into a real option as 0: a real must be
+// written out ("inf" for no bound).
+const CLI::Validator real_number(
+  [](std::string& text) -> std::string {
+    if(text.empty())
+      return "the value is empty (a number is expected)";
+    char* end = nullptr;
+    std::strtod(text.c_str(), &end);
+    return end == text.c_str() + text.size() ? std::string() : "'" + text + "' is not a number";
+  },
+  "REAL");
+
 const CLI::Validator non_empty_path(
   [](std::string& text) -> std::string { return text.empty() ? "the file name is empty" : std::string(); },
   "FILE");
@@ -363,31 +456,6 @@ private:
   double last_print_ = 0;
 };
 
-// The first SIGINT or SIGTERM asks the run to stop: the atlas is cancelled
-// at its next progress report and nothing is written. The handler then
-// gives way to the default one, so that a second signal kills at once.
-volatile std::sig_atomic_t stop_signal = 0;
-
-extern "C" void on_stop_signal(int signal_number) { stop_signal = signal_number; }
-
-void catch_stop_signals()
-{
-  struct sigaction action;
-  action.sa_handler = on_stop_signal;
-  sigemptyset(&action.sa_mask);
-  // SA_RESTART: a read from a pipe goes on, and the run stops at its next report.
-  action.sa_flags = SA_RESETHAND | SA_RESTART;
-  for(int signal_number : { SIGINT, SIGTERM })
-  {
-    // A signal ignored by whoever started us (a background job) stays ignored.
-    struct sigaction current;
-    if(sigaction(signal_number, nullptr, &current) == 0 && current.sa_handler != SIG_IGN)
-      sigaction(signal_number, &action, nullptr);
-  }
-}
-
-std::string stop_signal_name() { return stop_signal == SIGTERM ? "SIGTERM" : "SIGINT (Ctrl-C)"; }
-
 // What the command line asks for.
 struct Command_line
 {
@@ -397,6 +465,17 @@ struct Command_line
   std::string resolution = std::to_string(DS::default_texture_resolution);
   bool no_fallback = false, quiet = false;
   DS_IO::Read_options read_options;
+
+  // Every file the run reads: no output may replace one.
+  std::vector<disk_uv::Output_files::Read_file> read_files() const
+  {
+    std::vector<disk_uv::Output_files::Read_file> files;
+    for(const std::string& input : inputs)
+      files.push_back({ input, "the input file" });
+    if(!material_ids_path.empty())
+      files.push_back({ material_ids_path, "the --material-ids file" });
+    return files;
+  }
 };
 
 void add_options(CLI::App& app, Command_line& line)
@@ -420,32 +499,32 @@ void add_options(CLI::App& app, Command_line& line)
   app.add_option("--resolution", line.resolution,
                  "target texture side in texels, or WIDTHxHEIGHT (e.g. 2048x1024) for a non-square one (tight packer)")
     ->capture_default_str()->check(texture_size);
-  app.add_option("--padding", options.padding_in_texels, "gap around charts in texels")->capture_default_str();
+  app.add_option("--padding", options.padding_in_texels, "gap around charts in texels")->capture_default_str()->check(real_number);
   app.add_option("--texels-per-unit", options.texels_per_unit,
                  "fixed texel density (texels per unit of length, tight packer): the charts fill as many pages of "
                  "--resolution texels as they need, laid out as UDIM tiles (0: the largest density that fits one "
-                 "page)")->capture_default_str();
+                 "page)")->capture_default_str()->check(real_number);
   app.add_option("--max-pages", options.max_number_of_pages, "most pages --texels-per-unit may fill")
     ->capture_default_str()->check(non_negative_count);
   app.add_option("-n,--seeds", options.number_of_seeds, "number of farthest-point seeds")->capture_default_str()->check(non_negative_count);
   app.add_option("-k,--subsamples", options.number_of_subsamples, "seeds used to re-sample a region that is not a disk")->capture_default_str()->check(non_negative_count);
-  app.add_option("--threshold", options.merge_threshold, "merge score threshold (eps_5 = 0.7624 by default)")->capture_default_str();
+  app.add_option("--threshold", options.merge_threshold, "merge score threshold (eps_5 = 0.7624 by default)")->capture_default_str()->check(real_number);
   app.add_option("--crease-penalty", options.crease_penalty,
                  "Voronoi distances cross bent edges at 1 + K (1 - cos(dihedral angle)) times their length: "
-                 "borders follow creases (0: the paper's geodesic distance)")->capture_default_str();
+                 "borders follow creases (0: the paper's geodesic distance)")->capture_default_str()->check(real_number);
   app.add_option("--max-angle-distortion", bound.max_angle_distortion,
-                 "largest mean |log(s1/s2)| of a chart (inf: no bound)")->capture_default_str();
+                 "largest mean |log(s1/s2)| of a chart (inf: no bound)")->capture_default_str()->check(real_number);
   app.add_option("--max-area-distortion", bound.max_area_distortion,
-                 "largest mean |log(s1 s2)| of a chart, scaled to its 3D area (inf: no bound)")->capture_default_str();
+                 "largest mean |log(s1 s2)| of a chart, scaled to its 3D area (inf: no bound)")->capture_default_str()->check(real_number);
   app.add_option("--max-stretch", bound.max_stretch,
-                 "largest s1/s2 of any triangle (inf: no bound)")->capture_default_str();
+                 "largest s1/s2 of any triangle (inf: no bound)")->capture_default_str()->check(real_number);
   app.add_option("--max-area-scale", bound.max_area_scale,
-                 "largest s1 s2 and 1/(s1 s2) of any triangle (inf: no bound)")->capture_default_str();
+                 "largest s1 s2 and 1/(s1 s2) of any triangle (inf: no bound)")->capture_default_str()->check(real_number);
   app.add_option("--max-stretch-p95", bound.max_stretch_p95,
-                 "largest 95th percentile of s1/s2 over a chart's triangles (inf: no bound)")->capture_default_str();
+                 "largest 95th percentile of s1/s2 over a chart's triangles (inf: no bound)")->capture_default_str()->check(real_number);
   app.add_option("--min-convexity", bound.min_convexity,
                  "smallest UV area / UV convex hull area of a chart holding 3% of the mesh's area or more, "
-                 "0.8 times it for smaller charts (0: no bound; packs tighter)")->capture_default_str();
+                 "0.8 times it for smaller charts (0: no bound; packs tighter)")->capture_default_str()->check(real_number);
   app.add_flag("--unbounded", options.unbounded,
                "no distortion or convexity bound (with --rough-borders --crease-penalty 0: the paper's charts; "
                "only invalid ones are redone or split)");
@@ -455,7 +534,7 @@ void add_options(CLI::App& app, Command_line& line)
                  "split larger patches before parameterizing them (bounds memory)")->capture_default_str()->check(non_negative_count);
   app.add_option("--max-charts", options.max_number_of_charts,
                  "chart budget: merge charts past the distortion bound until there are at most this many "
-                 "(0: no budget)")->capture_default_str()->check(non_negative_count);
+                 "(0: no budget; with several inputs, for each input)")->capture_default_str()->check(non_negative_count);
   app.add_option("--threads", options.number_of_threads, "maximum number of threads (0: all)")->capture_default_str()->check(non_negative_count);
   app.add_flag("--repair", read_options.repair,
                "merge duplicated vertices, drop duplicated and degenerate faces, orient the faces and "
@@ -479,6 +558,7 @@ struct Atlas_outputs
 {
   const Command_line& line;
   unsigned int width, height;
+  std::vector<disk_uv::Output_files::Read_file> read_files;
   disk_uv::Output_files files;
   std::vector<disk_uv::Output_files::Writer> writers;
   std::vector<std::string> page_pictures;
@@ -492,7 +572,7 @@ struct Atlas_outputs
   double read_seconds = 0;
 
   Atlas_outputs(const Command_line& command_line, unsigned int texture_width, unsigned int texture_height)
-    : line(command_line), width(texture_width), height(texture_height)
+    : line(command_line), width(texture_width), height(texture_height), read_files(command_line.read_files())
   {
     add("-o", line.obj_path, [this](std::ostream& o) { DS_IO::write_atlas_OBJ(o, mesh, patch, uv); });
     add("--glb", line.glb_path, [this](std::ostream& o) { DS_IO::write_atlas_GLB(o, mesh, patch, uv); });
@@ -502,6 +582,15 @@ struct Atlas_outputs
           [this](std::ostream& o) { DS_IO::write_atlas_PNG(o, mesh, patch, uv, width, height); });
     add("--patch-ids", line.patch_ids_path, [this](std::ostream& o) { write_patch_ids(o, mesh, patch); });
     add("--colored", line.colored_path, [this](std::ostream& o) { write_colored_ply(o, mesh, patch); });
+    // Killed runs' temporaries of page pictures, whatever their number of pages.
+    if(!line.png_path.empty())
+    {
+      const std::string picture = disk_uv::internal::file_name_of(line.png_path);
+      files.remove_stale_temporaries_of(disk_uv::internal::directory_of(line.png_path),
+                                        [picture](const std::string& name) {
+                                          return page_picture_tile(name, picture) != 0;
+                                        });
+    }
     add("--report", line.report_path, [this](std::ostream& o) {
       nlohmann::json json = several_report != nullptr
                               ? *several_report
@@ -518,7 +607,7 @@ struct Atlas_outputs
   {
     if(path.empty())
       return;
-    files.add(option, path, line.inputs);
+    files.add(option, path, read_files);
     writers.push_back(std::move(writer));
   }
 
@@ -546,7 +635,13 @@ struct Atlas_outputs
     }
   }
 
-  void write_all() { files.write_all(writers); }
+  void write_all()
+  {
+    files.write_all(writers);
+    if(!line.png_path.empty())
+      warn_of_other_page_pictures(line.png_path, page_pictures.empty() ? std::vector<std::string>{ line.png_path }
+                                                                        : page_pictures);
+  }
 };
 
 typedef std::function<bool(const std::string&, std::size_t, std::size_t)> Progress_callback;
@@ -556,11 +651,9 @@ template <typename Settings>
 int run_several(const Command_line& line, const Settings& settings, const Progress_callback& keep_going,
                 Progress_display& display, Atlas_outputs& out)
 {
-  if(!line.material_ids_path.empty())
-    throw disk_uv::Tool_error("--material-ids takes one INPUT, not " + std::to_string(line.inputs.size()));
   const Several_atlas several = atlas_of_several(line.inputs, line.read_options, settings.progress_callback(keep_going));
   display.finish();
-  if(stop_signal != 0)
+  if(disk_uv::Stop_signals::received() != 0)
     throw DS::Cancelled("packing");
   combine(several, out.mesh, out.patch, out.uv);
   out.add_pages(several.report.packing);
@@ -572,6 +665,13 @@ int run_several(const Command_line& line, const Settings& settings, const Progre
   print_pages(several.report.packing, out.page_pictures, line.quiet);
   warn_if_sparse(several.report.packing, several.report.first_chart.back(), line.resolution,
                  line.options.padding_in_texels, line.options.texels_per_unit);
+  warn_of_charts_below_a_texel(several.report.packing, line.resolution);
+  const std::size_t budget = line.options.max_number_of_charts;
+  if(budget > 0 && several.report.first_chart.back() > budget)
+    std::fprintf(stderr,
+                 "disk_uv: warning: %zu charts in all: --max-charts (%zu) is a budget for each of the %zu inputs, "
+                 "not for the atlas\n",
+                 several.report.first_chart.back(), budget, line.inputs.size());
   return several_charts_are_valid(several) ? 0 : 1;
 }
 
@@ -643,7 +743,7 @@ int run_single(const Command_line& line, const Settings& settings, const Progres
   display.finish();
   // From here the writing's own handler (output_files.h) takes over: a
   // signal removes the temporaries and ends the run.
-  if(stop_signal != 0)
+  if(disk_uv::Stop_signals::received() != 0)
     throw DS::Cancelled("packing");
 
   out.report = &report;
@@ -656,6 +756,7 @@ int run_single(const Command_line& line, const Settings& settings, const Progres
   const std::size_t max_charts = line.options.max_number_of_charts;
   warn_if_sparse(report.packing, report.number_of_charts, line.resolution, line.options.padding_in_texels,
                  line.options.texels_per_unit);
+  warn_of_charts_below_a_texel(report.packing, line.resolution);
   if(!report.parameterization.chart_budget_met)
     std::cerr << "disk_uv: warning: " << report.number_of_charts << " charts, over --max-charts (" << max_charts
               << "): no two adjacent charts unite into one disk with a valid map" << std::endl;
@@ -672,27 +773,42 @@ int run_single(const Command_line& line, const Settings& settings, const Progres
   return 0;
 }
 
-int run(Command_line& line, Progress_display& display)
+// The library's parameters for what the command line asks, every option
+// checked before any file is read or written: a bad value, or options that
+// no input could make work together, is a usage error (exit status 2).
+auto checked_settings(Command_line& line)
 {
   DS_IO::Atlas_options& options = line.options;
   DS_IO::parse_texture_size(line.resolution, options.texture_width, options.texture_height);
-  const unsigned int width = options.texture_width, height = options.texture_height;
-  for(unsigned int side : { width, height })
+  for(unsigned int side : { options.texture_width, options.texture_height })
     if(!line.png_path.empty() && (side == 0 || side > DS_IO::max_atlas_png_resolution))
-      throw disk_uv::Tool_error("--atlas-png needs --resolution between 1 and " +
-                                std::to_string(DS_IO::max_atlas_png_resolution) + ", not " + std::to_string(side));
-  Atlas_outputs out(line, width, height);
-
-  // Before the library's own check, to name the user's --resolution; an unknown packer is named first.
-  if(width != height && DS_IO::packing_method_from_string(options.packer) != DS::Packing_method::TIGHT)
-    throw disk_uv::Tool_error("--resolution " + line.resolution + " is not square: the grid packer's cells are square "
-                              "(use --packer tight)");
-
+      throw disk_uv::Usage_error("--atlas-png needs --resolution between 1 and " +
+                                 std::to_string(DS_IO::max_atlas_png_resolution) + ", not " + std::to_string(side));
+  if(!line.material_ids_path.empty() && line.inputs.size() > 1)
+    throw disk_uv::Usage_error("--material-ids takes one INPUT, not " + std::to_string(line.inputs.size()));
   options.use_fallback = !line.no_fallback;
-  const auto settings = DS_IO::atlas_parameters(options);
+  try
+  {
+    // Before the library's own check, to name the user's --resolution; an unknown packer is named first.
+    if(options.texture_width != options.texture_height &&
+       DS_IO::packing_method_from_string(options.packer) != DS::Packing_method::TIGHT)
+      throw disk_uv::Usage_error("--resolution " + line.resolution + " is not square: the grid packer's cells are "
+                                 "square (use --packer tight)");
+    return DS_IO::atlas_parameters(options);
+  }
+  catch(const DS::Input_error& e)
+  {
+    throw disk_uv::Usage_error(DS_IO::in_user_terms(e.what(), DS_IO::Front_end::command_line));
+  }
+}
+
+int run(Command_line& line, Progress_display& display)
+{
+  const auto settings = checked_settings(line);
+  Atlas_outputs out(line, line.options.texture_width, line.options.texture_height);
   const Progress_callback keep_going([&display](const std::string& s, std::size_t d, std::size_t t) {
     display(s, d, t);
-    return stop_signal == 0;
+    return disk_uv::Stop_signals::received() == 0;
   });
   return line.inputs.size() > 1 ? run_several(line, settings, keep_going, display, out)
                                  : run_single(line, settings, keep_going, display, out);
@@ -702,7 +818,7 @@ int run(Command_line& line, Progress_display& display)
 
 int main(int argc, char** argv)
 {
-  catch_stop_signals();
+  disk_uv::Stop_signals::install();
   CLI::App app{"disk_uv: UV atlas of a triangle mesh through a segmentation into topological disks"};
   Command_line line;
   add_options(app, line);
@@ -718,14 +834,34 @@ int main(int argc, char** argv)
   Progress_display display(!line.quiet && ::isatty(2));
   try
   {
-    return run(line, display);
+    const int status = run(line, display);
+    // The outputs were in place before the signal was seen: said, not undone.
+    if(disk_uv::Stop_signals::received() != 0)
+    {
+      std::cerr << "disk_uv: " << disk_uv::Stop_signals::name()
+                << " came after the outputs were written; they are complete" << std::endl;
+      return disk_uv::Stop_signals::exit_status();
+    }
+    return status;
   }
   catch(const DS::Cancelled& e)
   {
     display.finish();
-    std::cerr << "disk_uv: stopped by " << stop_signal_name() << " during the " << e.stage()
+    std::cerr << "disk_uv: stopped by " << disk_uv::Stop_signals::name() << " during the " << e.stage()
               << "; no output was written" << std::endl;
-    return 128 + (stop_signal != 0 ? int(stop_signal) : SIGINT);
+    return disk_uv::Stop_signals::exit_status();
+  }
+  catch(const disk_uv::Stopped_while_writing&)
+  {
+    std::cerr << "disk_uv: stopped by " << disk_uv::Stop_signals::name()
+              << " during the writing of the outputs; no output was written" << std::endl;
+    return disk_uv::Stop_signals::exit_status();
+  }
+  catch(const disk_uv::Usage_error& e)
+  {
+    display.finish();
+    std::cerr << "disk_uv: error: " << e.what() << std::endl;
+    return 2;
   }
   catch(const DS::Input_error& e)
   {

@@ -18,12 +18,15 @@
 
 #include "tool_error.h"
 
+#include "stop_signals.h"
+
 #include <algorithm>
 #include <cerrno>
-#include <csignal>
 #include <cstdlib>
 #include <cstring>
 #include <functional>
+#include <map>
+#include <set>
 #include <stdexcept>
 #include <ostream>
 #include <streambuf>
@@ -33,7 +36,6 @@
 #include <dirent.h>
 #include <fcntl.h>
 #include <limits.h>
-#include <signal.h>
 #include <stdlib.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -73,6 +75,12 @@ private:
     // repeats one without progress.
     while(left > 0 && error_ == 0)
     {
+      // A stop signal ends a long output at its next block.
+      if(Stop_signals::received() != 0)
+      {
+        error_ = EINTR;
+        break;
+      }
       const ssize_t written = ::write(fd_, data, left);
       if(written < 0 && errno == EINTR)
         continue;
@@ -91,52 +99,6 @@ private:
   int fd_;
   int error_ = 0;
   std::vector<char> buffer_;
-};
-
-// Temporary files to remove if the tool is interrupted while writing them.
-// Fixed storage: the signal handler may only call async-signal-safe code.
-struct Interrupted_cleanup
-{
-  static constexpr int capacity = 16;
-  static char* paths()
-  {
-    static char storage[capacity][PATH_MAX + 1];
-    return &storage[0][0];
-  }
-  static volatile std::sig_atomic_t* used()
-  {
-    static volatile std::sig_atomic_t flags[capacity];
-    return flags;
-  }
-  static int add(const std::string& path)
-  {
-    for(int i = 0; i < capacity; ++i)
-      if(!used()[i] && path.size() <= PATH_MAX)
-      {
-        std::memcpy(paths() + i * (PATH_MAX + 1), path.c_str(), path.size() + 1);
-        used()[i] = 1;
-        return i;
-      }
-    return -1;
-  }
-  static void remove(int slot)
-  {
-    if(slot >= 0)
-      used()[slot] = 0;
-  }
-  static void handle(int signal_number)
-  {
-    for(int i = 0; i < capacity; ++i)
-      if(used()[i])
-        ::unlink(paths() + i * (PATH_MAX + 1));
-    std::signal(signal_number, SIG_DFL);
-    std::raise(signal_number);
-  }
-  static void install()
-  {
-    for(int s : { SIGINT, SIGTERM, SIGHUP })
-      std::signal(s, &Interrupted_cleanup::handle);
-  }
 };
 
 inline std::string system_error_text(int error) { return std::strerror(error); }
@@ -163,6 +125,9 @@ inline std::string canonical_path(const std::string& path)
   return resolved;
 }
 
+// The marker between a temporary file's name prefix and its process id.
+constexpr const char* temporary_marker = ".disk_uv-";
+
 // The start of the names of the temporary files beside `name` in `folder`:
 // ".NAME.disk_uv-", then the process id and an attempt number. A name too
 // long for the folder (NAME_MAX, 255 bytes on most file systems) keeps only
@@ -177,27 +142,32 @@ inline std::string temporary_prefix(const std::string& folder, const std::string
   std::size_t keep = (std::min)(name.size(), room);
   while(keep > 0 && keep < name.size() && (static_cast<unsigned char>(name[keep]) & 0xc0) == 0x80)
     --keep;
-  return "." + name.substr(0, keep) + ".disk_uv-";
+  return "." + name.substr(0, keep) + temporary_marker;
 }
 
-// Removes the temporary files `prefix`PID-N in `folder` whose process is
-// gone: a run killed (SIGKILL, a power cut) while writing leaves them,
-// full-size. Files of a live process, or named otherwise, stay.
-inline void remove_stale_temporaries(const std::string& folder, const std::string& prefix)
+// Removes the temporary files PREFIXPID-N in `folder` (PREFIX as
+// temporary_prefix() makes it) whose PREFIX `ours` accepts and whose
+// process is gone: a run killed (SIGKILL, a power cut) while writing leaves
+// them, full-size. Files of a live process, or named otherwise, stay. One
+// pass over the folder, whatever the number of outputs in it.
+template <typename Accept>
+void remove_stale_temporaries(const std::string& folder, const Accept& ours)
 {
   DIR* dir = ::opendir(folder.c_str());
   if(dir == nullptr)
     return;
+  const std::string marker = temporary_marker;
   while(const dirent* entry = ::readdir(dir))
   {
     const std::string name = entry->d_name;
-    if(name.compare(0, prefix.size(), prefix) != 0)
+    const std::size_t at = name.rfind(marker);
+    if(name.empty() || name[0] != '.' || at == std::string::npos || at == 0)
       continue;
-    const std::string rest = name.substr(prefix.size());
+    const std::string rest = name.substr(at + marker.size());
     const std::size_t dash = rest.find('-');
     if(dash == 0 || dash == std::string::npos || dash + 1 == rest.size() ||
        rest.find_first_not_of("0123456789-") != std::string::npos || rest.find('-', dash + 1) != std::string::npos ||
-       dash > 10)
+       dash > 10 || !ours(name.substr(0, at + marker.size())))
       continue;
     const long pid = std::strtol(rest.c_str(), nullptr, 10);
     if(pid > 0 && pid != ::getpid() && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH)
@@ -219,12 +189,20 @@ public:
   Output_files& operator=(const Output_files&) = delete;
   ~Output_files() { discard(); }
 
+  // A file the run reads, which no output may replace: its path and what
+  // it is to the user ("the input file", "the --material-ids file").
+  struct Read_file
+  {
+    std::string path, role;
+  };
+
   // Checks `path`, given with `option`, before any work: it must be a
   // writable regular file or a new file in a writable folder (followed
   // through symbolic links), or something written through such as
-  // /dev/null or a pipe with a reader. It must not be the input file, nor
-  // the same file as another output. Throws Tool_error naming the problem.
-  void add(const std::string& option, const std::string& path, const std::vector<std::string>& inputs)
+  // /dev/null or a pipe with a reader. It must not be a file the run reads
+  // (under any spelling: the same device and inode), nor the same file as
+  // another output. Throws Tool_error naming the problem.
+  void add(const std::string& option, const std::string& path, const std::vector<Read_file>& read_files)
   {
     Output o;
     o.option = option;
@@ -249,34 +227,42 @@ public:
     else
       fail(o, "it is neither a regular file, a character device nor a pipe");
 
-    for(const std::string& input : inputs)
+    for(const Read_file& input : read_files)
     {
       struct stat input_status;
-      if(o.exists && ::stat(input.c_str(), &input_status) == 0 && input_status.st_dev == o.device &&
+      if(o.exists && ::stat(input.path.c_str(), &input_status) == 0 && input_status.st_dev == o.device &&
          input_status.st_ino == o.inode)
-        fail(o, "it is the input file");
+        fail(o, "it is " + input.role);
     }
-    for(const Output& other : outputs_)
-      if(o.same_file(other) && !(o.write_through && S_ISCHR(status.st_mode)))
-        throw Tool_error("'" + path + "' is given to both " + other.option + " and " + option +
-                         "; one file cannot hold both outputs");
+    // A device such as /dev/null may take several outputs.
+    if(!(o.write_through && S_ISCHR(status.st_mode)))
+    {
+      const auto known = output_of_file_.emplace(o.file_key(), outputs_.size());
+      if(!known.second)
+        throw Tool_error("'" + path + "' is given to both " + outputs_[known.first->second].option + " and " +
+                         option + "; one file cannot hold both outputs");
+    }
     outputs_.push_back(std::move(o));
   }
 
   // Writes every output added, in the order added, through `writers` (one
-  // per output), then replaces the targets. On any failure, no target has
-  // been replaced and no temporary file is left.
+  // per output), then replaces the targets. On any failure, or a stop
+  // signal before the targets are replaced (Stopped_while_writing), no
+  // target has been replaced and no temporary file is left. Once the
+  // replacing has begun, a signal no longer stops it.
   void write_all(const std::vector<Writer>& writers)
   {
     if(writers.size() != outputs_.size())
       throw std::logic_error("Output_files::write_all: one writer per output is needed");
-    internal::Interrupted_cleanup::install();
+    Stop_signals::reserve_temporaries(outputs_.size());
+    remove_stale_temporaries();
     for(std::size_t i = 0; i < outputs_.size(); ++i)
       if(!outputs_[i].write_through)
-        write_temporary(outputs_[i], writers[i]);
+        write_temporary(i, writers[i]);
     for(std::size_t i = 0; i < outputs_.size(); ++i)
       if(outputs_[i].write_through)
         write_through(outputs_[i], writers[i]);
+    stop_if_signalled();
     for(std::size_t i = 0; i < outputs_.size(); ++i)
     {
       Output& o = outputs_[i];
@@ -292,13 +278,19 @@ public:
         throw Tool_error("cannot replace '" + o.path + "' (" + internal::system_error_text(error) + ")" +
                          (replaced.empty() ? std::string() : "; already replaced: " + replaced));
       }
-      o.temporary.clear();
-      internal::Interrupted_cleanup::remove(o.cleanup_slot);
-      o.cleanup_slot = -1;
+      forget_temporary(i);
     }
   }
 
   std::size_t size() const { return outputs_.size(); }
+
+  // Temporaries left in `folder` by killed runs for files named as
+  // `accepts` says (e.g. the UDIM pictures of an earlier run's pages) are
+  // removed too, before the writing.
+  void remove_stale_temporaries_of(const std::string& folder, std::function<bool(const std::string&)> accepts)
+  {
+    stale_names_.emplace_back(folder, std::move(accepts));
+  }
 
 private:
   struct Output
@@ -315,13 +307,11 @@ private:
     uid_t owner = 0;
     gid_t group = 0;
     int descriptor = -1;      // open write-through target
-    int cleanup_slot = -1;
 
-    bool same_file(const Output& o) const
+    // The same for two outputs exactly when they name one file.
+    std::string file_key() const
     {
-      if(exists != o.exists)
-        return false;
-      return exists ? device == o.device && inode == o.inode : identity == o.identity;
+      return exists ? "inode " + std::to_string(device) + ":" + std::to_string(inode) : "new " + identity;
     }
   };
 
@@ -408,17 +398,61 @@ private:
     return error;
   }
 
-  void write_temporary(Output& o, const Writer& writer)
+  // The temporaries that killed runs left for our targets, and for the
+  // names stale_names_ accepts in their folders.
+  void remove_stale_temporaries() const
   {
+    std::map<std::string, std::set<std::string> > prefixes_by_folder;
+    for(const Output& o : outputs_)
+      if(!o.write_through)
+      {
+        const std::string folder = internal::directory_of(o.target);
+        prefixes_by_folder[folder].insert(internal::temporary_prefix(folder, internal::file_name_of(o.target)));
+      }
+    for(const auto& names : stale_names_)
+      prefixes_by_folder[names.first];
+    for(const auto& folder : prefixes_by_folder)
+      internal::remove_stale_temporaries(folder.first, [&](const std::string& prefix) {
+        if(folder.second.count(prefix) > 0)
+          return true;
+        // ".NAME.disk_uv-": NAME is what stale_names_ judges.
+        const std::string name = prefix.substr(1, prefix.size() - 1 - std::strlen(internal::temporary_marker));
+        for(const auto& names : stale_names_)
+          if(names.first == folder.first && names.second(name))
+            return true;
+        return false;
+      });
+  }
+
+  static void stop_if_signalled()
+  {
+    if(Stop_signals::received() != 0)
+      throw Stopped_while_writing();
+  }
+
+  // Output `i`'s temporary name is no longer one to remove: renamed, or removed.
+  void forget_temporary(std::size_t i)
+  {
+    Stop_signals::clear_temporary(i);
+    outputs_[i].temporary.clear();
+  }
+
+  void write_temporary(std::size_t i, const Writer& writer)
+  {
+    stop_if_signalled();
+    Output& o = outputs_[i];
     const std::string folder = internal::directory_of(o.target);
     const std::string prefix = internal::temporary_prefix(folder, internal::file_name_of(o.target));
-    internal::remove_stale_temporaries(folder, prefix);
     const std::string stem = folder + "/" + prefix + std::to_string(::getpid());
     int fd = -1;
     // At most 100 names; an error other than EEXIST ends it at once.
     for(int attempt = 0; attempt < 100 && fd < 0; ++attempt)
     {
+      // Known to the signal handler before the file exists; never while the
+      // name changes.
+      Stop_signals::clear_temporary(i);
       o.temporary = stem + "-" + std::to_string(attempt);
+      Stop_signals::set_temporary(i, o.temporary.c_str());
       // O_EXCL: never write into a file that is already there. Mode 0666
       // lets the umask decide, as for any new file.
       fd = ::open(o.temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
@@ -428,10 +462,9 @@ private:
     if(fd < 0)
     {
       const int error = errno;
-      o.temporary.clear();
+      forget_temporary(i);
       fail(o, "cannot create a temporary file in '" + folder + "' (" + internal::system_error_text(error) + ")");
     }
-    o.cleanup_slot = internal::Interrupted_cleanup::add(o.temporary);
     if(o.exists)
     {
       // The replacement keeps the replaced file's permissions and, where
@@ -440,6 +473,7 @@ private:
       ::fchmod(fd, o.mode);
     }
     const int error = write_and_close(fd, writer);
+    stop_if_signalled();
     if(error != 0)
       throw Tool_error("error while writing '" + o.path + "': " + internal::system_error_text(error));
   }
@@ -449,26 +483,30 @@ private:
     const int fd = o.descriptor;
     o.descriptor = -1;
     const int error = write_and_close(fd, writer);
+    stop_if_signalled();
     if(error != 0)
       throw Tool_error("error while writing '" + o.path + "': " + internal::system_error_text(error));
   }
 
   void discard()
   {
-    for(Output& o : outputs_)
+    for(std::size_t i = 0; i < outputs_.size(); ++i)
     {
+      Output& o = outputs_[i];
       if(!o.temporary.empty())
+      {
         ::unlink(o.temporary.c_str());
-      internal::Interrupted_cleanup::remove(o.cleanup_slot);
+        forget_temporary(i);
+      }
       if(o.descriptor >= 0)
         ::close(o.descriptor);
-      o.temporary.clear();
       o.descriptor = -1;
-      o.cleanup_slot = -1;
     }
   }
 
   std::vector<Output> outputs_;
+  std::map<std::string, std::size_t> output_of_file_;
+  std::vector<std::pair<std::string, std::function<bool(const std::string&)> > > stale_names_;
 };
 
 } // namespace disk_uv
