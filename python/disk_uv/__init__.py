@@ -16,6 +16,7 @@ The computation releases the GIL. Bad input raises ``ValueError`` naming the
 problem (shapes, dtypes, NaN, indices out of range, non-manifold meshes).
 """
 
+import inspect
 import json
 import warnings
 import os
@@ -25,7 +26,7 @@ import numpy
 from . import _disk_uv
 from ._files import write_atomically
 
-__all__ = ["Atlas", "ArgumentTypeError", "Cancelled", "atlas", "parametrize", "segment", "load", "save_obj", "save_glb"]
+__all__ = ["Atlas", "ArgumentTypeError", "Cancelled", "atlas", "check_options", "parametrize", "segment", "load", "save_obj", "save_glb"]
 
 METHODS = ("arap", "conformal", "lscm", "mvc", "tutte")
 
@@ -117,6 +118,23 @@ def _warn_if_sparse(efficiency, charts, resolution, padding, texels_per_unit):
                       % (100 * efficiency, resolution, padding, charts), RuntimeWarning, stacklevel=3)
 
 
+def _warn_of_charts_below_a_texel(packing, resolution, texels_per_unit):
+    tiny = packing.get("charts_below_a_texel", 0)
+    if tiny:
+        warnings.warn("%d of %d charts are smaller than one texel of a resolution=%s texture%s: they get no texel "
+                      "of their own" % (tiny, len(packing["page_of_chart"]), resolution,
+                                        " at this texels_per_unit" if texels_per_unit else ""),
+                      RuntimeWarning, stacklevel=3)
+
+
+def _looks_like_meshes(vertices):
+    """Whether `vertices` is a list of (vertices, faces) pairs rather than vertex coordinates."""
+    if not isinstance(vertices, (list, tuple)) or not vertices:
+        return False
+    first = vertices[0]
+    return isinstance(first, (list, tuple)) and len(first) == 2 and numpy.ndim(first[0]) == 2
+
+
 def _checked_progress(progress):
     if progress is not None and not callable(progress):
         raise ArgumentTypeError("progress must be None or a callable (stage, done, total), not %s"
@@ -186,7 +204,8 @@ def atlas(vertices, faces=None, method=_disk_uv.default_parameterization_method,
             ``resolution`` texels as they need (``Atlas.pages``,
             ``report["packing"]["pages"]``); a chart larger than a page
             raises ``ValueError``.
-        max_pages: the most pages ``texels_per_unit`` may fill.
+        max_pages: the most pages ``texels_per_unit`` may fill (at most 999:
+            pages are written as the UDIM tiles 1001 to 1999).
         threads: at most this many threads (0: all); the result does not depend on it.
         seed: None (deterministic default first seed) or an integer seed.
         n, k, threshold: the segmentation's seeds, subsamples and merge threshold.
@@ -230,6 +249,9 @@ def atlas(vertices, faces=None, method=_disk_uv.default_parameterization_method,
     options["face_groups"] = face_groups
     options["materials"] = materials
     options["progress"] = _checked_progress(progress)
+    if faces is not None and _looks_like_meshes(vertices):
+        raise ArgumentTypeError("atlas() was given a list of (vertices, faces) pairs and faces: with a list of "
+                                "meshes, faces must be None (each pair holds its own faces)")
     if faces is None:
         if not isinstance(vertices, (list, tuple)):
             raise ArgumentTypeError("atlas() takes vertices and faces, or a list of (vertices, faces) pairs, not %s"
@@ -240,12 +262,33 @@ def atlas(vertices, faces=None, method=_disk_uv.default_parameterization_method,
         if atlases:
             _warn_if_sparse(atlases[0].report["packing"]["efficiency"], atlases[0].report["total_charts"],
                             resolution, padding, texels_per_unit)
+            _warn_of_charts_below_a_texel(atlases[0].report["packing"], resolution, texels_per_unit)
+            if max_charts is not None and atlases[0].report["total_charts"] > max_charts:
+                warnings.warn("%d charts in all: max_charts=%d is a budget for each of the %d meshes, not for the "
+                              "atlas" % (atlases[0].report["total_charts"], max_charts, len(atlases)),
+                              RuntimeWarning, stacklevel=2)
         return atlases
     result = _disk_uv.atlas(vertices, faces, options)
     atlas = Atlas(vertices, faces, result["uvs"], result["chart_ids"], json.loads(result["report"]))
     _warn_if_sparse(atlas.report["packing"]["efficiency"], atlas.number_of_charts, resolution, padding,
                     texels_per_unit)
+    _warn_of_charts_below_a_texel(atlas.report["packing"], resolution, texels_per_unit)
     return atlas
+
+
+def check_options(**options):
+    """Checks options of :func:`atlas` (its keywords, but for the per-mesh
+    ``face_groups``, ``materials`` and ``progress``) without a mesh,
+    as :func:`atlas` checks them first: raises ``ValueError`` (or
+    :class:`ArgumentTypeError`) naming the first bad one, else returns None.
+    A batch checks its options once this way before it reads any mesh."""
+    names = [name for name in inspect.signature(_atlas_options).parameters]
+    unknown = sorted(set(options) - set(names))
+    if unknown:
+        raise TypeError("check_options() got unknown options: %s" % ", ".join(unknown))
+    defaults = inspect.signature(atlas).parameters
+    values = {name: options.get(name, defaults[name].default) for name in names}
+    _disk_uv.check_atlas_options(_atlas_options(**values))
 
 
 def parametrize(vertices, faces, **options):
@@ -254,8 +297,12 @@ def parametrize(vertices, faces, **options):
     Returns ``(vmapping, indices, uvs)``: ``vmapping`` (M,) uint32 maps each
     output vertex to its input vertex, ``indices`` (F, 3) uint32 are the
     faces, in input order, over the output vertices, and ``uvs`` (M, 2)
-    float32 in [0, 1]. An input vertex on a seam gets one output vertex per
-    chart. ``options`` are those of :func:`atlas`.
+    float32, in [0, 1] on one page; with ``texels_per_unit`` the charts may
+    fill several pages, and page ``p`` then lies in its UDIM tile
+    ``[p % 10, p % 10 + 1] x [p // 10, p // 10 + 1]`` (:meth:`Atlas.udim_uvs`).
+    An input vertex on a seam gets one output vertex per chart.
+    ``options`` are those of :func:`atlas`. Raises ``ValueError`` if charts
+    are too small for float32 UVs (a tiny ``texels_per_unit``).
     """
     return atlas(vertices, faces, **options).xatlas_arrays()
 

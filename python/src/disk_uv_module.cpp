@@ -17,6 +17,7 @@
 
 #include <CGAL/Disk_segmentation/IO/Atlas_options.h>
 #include <CGAL/Disk_segmentation/IO/atlas_report_JSON.h>
+#include <CGAL/Disk_segmentation/IO/internal/Float_texcoords.h>
 #include <CGAL/Disk_segmentation/IO/read_triangle_mesh.h>
 
 #include <algorithm>
@@ -330,7 +331,13 @@ void run_interruptible(const py::object& progress, const std::function<void(cons
     try
     {
       const py::object answer = progress(stage, done, total);
-      return answer.is_none() || PyObject_IsTrue(answer.ptr()) != 0;
+      if(answer.is_none())
+        return true;
+      // Its __bool__ may raise: that stops the run like any exception of the callback.
+      const int truth = PyObject_IsTrue(answer.ptr());
+      if(truth < 0)
+        throw py::error_already_set();
+      return truth != 0;
     }
     catch(py::error_already_set&)
     {
@@ -390,7 +397,13 @@ std::vector<std::int64_t> face_values(const py::dict& o, const char* name, const
   std::vector<std::int64_t> values;
   if(o[name].is_none())
     return values;
-  const Index_array a = Index_array::ensure(as_numpy_array(o[name], name));
+  const py::array given = as_numpy_array(o[name], name);
+  // As for faces: a float array would be truncated (0.1 and 0.9 one id, NaN some id).
+  const char kind = given.dtype().kind();
+  if(kind != 'i' && kind != 'u')
+    throw Bad_argument(std::string(name) + " must be an array of integers, not of dtype " +
+                       std::string(py::str(given.dtype())));
+  const Index_array a = Index_array::ensure(given);
   if(!a || a.ndim() != 1 || std::size_t(a.shape(0)) != soup.faces.size())
     throw Bad_argument(std::string(name) + " must have shape (F,): " + what);
   values.assign(a.data(), a.data() + a.shape(0));
@@ -431,6 +444,14 @@ auto atlas_settings(const py::dict& o, std::string& method_name, std::string& pa
   options.texels_per_unit = real_option(o, "texels_per_unit");
   options.max_number_of_pages = count_option(o, "max_pages");
   return DS::IO::atlas_parameters(options);
+}
+
+// The options of atlas() checked without a mesh (the batch checks its
+// command line once, before any mesh is read).
+void check_atlas_options(const py::dict& o)
+{
+  std::string method_name, packer_name;
+  atlas_settings(o, method_name, packer_name);
 }
 
 py::dict run_atlas(const py::handle& vertices, const py::handle& faces, const py::dict& o)
@@ -587,6 +608,14 @@ py::tuple xatlas_arrays(const py::handle& faces_object, const py::handle& uvs_ob
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t> > outputs;  // (vertex, chart) -> output vertices
   std::vector<std::uint32_t> vmapping;
   std::vector<std::array<float, 2> > out_uvs;
+  std::size_t collapsed = 0;
+  for(py::ssize_t f = 0; f < nf; ++f)
+    if(DS::IO::internal::collapses_in_float({ { uvs.at(f, 0, 0), uvs.at(f, 1, 0), uvs.at(f, 2, 0) } },
+                                            { { uvs.at(f, 0, 1), uvs.at(f, 1, 1), uvs.at(f, 2, 1) } }))
+      ++collapsed;
+  if(collapsed > 0)
+    throw Bad_argument("xatlas's float32 UVs cannot hold this atlas: " +
+                       DS::IO::internal::collapsed_in_float_message(collapsed));
   py::array_t<std::uint32_t> indices({ nf, py::ssize_t(3) });
   auto ix = indices.mutable_unchecked<2>();
   for(py::ssize_t f = 0; f < nf; ++f)
@@ -721,6 +750,7 @@ PYBIND11_MODULE(_disk_uv, m)
   });
   m.def("atlas", &run_atlas, py::arg("vertices"), py::arg("faces"), py::arg("options"));
   m.def("atlas_of_meshes", &run_atlas_of_meshes, py::arg("meshes"), py::arg("options"));
+  m.def("check_atlas_options", &check_atlas_options, py::arg("options"));
   m.def("segment", &run_segment, py::arg("vertices"), py::arg("faces"), py::arg("options"));
   m.def("xatlas_arrays", &xatlas_arrays, py::arg("faces"), py::arg("uvs"), py::arg("chart_ids"));
   // "N" -> N, "WxH" -> (W, H), anything else -> None: the tool's --resolution.

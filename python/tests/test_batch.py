@@ -114,6 +114,12 @@ def test_manifest_and_bad_arguments(tmp_path):
     assert wrong.returncode == 2 and "error: --max-stretch must be > 1" in wrong.stderr, wrong.stderr
     wrong = batch(str(manifest), str(out), "--max-charts", "-1")
     assert wrong.returncode == 2 and "error: --max-charts must be non-negative" in wrong.stderr, wrong.stderr
+    # Options are checked without a mesh of the batch's own making: a density
+    # that would make a unit triangle larger than a page is an ordinary one.
+    dense = batch(str(manifest), str(tmp_path / "dense"), "--texels-per-unit", "1100", "--workers", "1")
+    assert dense.returncode == 0 and summary(tmp_path / "dense")["eight"]["status"] == "ok", dense.stderr
+    wrong = batch(str(manifest), str(out), "--max-pages", "1000")
+    assert wrong.returncode == 2 and "error: --max-pages must be at most 999" in wrong.stderr, wrong.stderr
     wrong = batch(str(manifest), str(out), "--crease-penalty", "-1")
     assert wrong.returncode == 2 and "error: --crease-penalty must be a finite number >= 0" in wrong.stderr, wrong.stderr
     # The paper's distance reaches the module: eight gets the charts atlas() gives it at 0, not the default's.

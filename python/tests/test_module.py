@@ -17,7 +17,8 @@ import pytest
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 import disk_uv  # noqa: E402
-from atlas_checks import atlas_problems, components, euler_characteristic, read_obj, udim_atlas_problems  # noqa: E402
+from atlas_checks import (atlas_problems, components, euler_characteristic, read_obj, signed_areas,  # noqa: E402
+                          udim_atlas_problems)
 
 DATA = os.environ.get("DISK_UV_DATA", os.path.join(os.path.dirname(__file__), "../../test/Disk_segmentation/data"))
 TOOL = os.environ.get("DISK_UV_TOOL")
@@ -189,7 +190,7 @@ def test_a_fixed_texel_density_spreads_the_charts_over_pages(tmp_path):
     # Pages with several meshes in one atlas.
     several = disk_uv.atlas([(vertices, faces), mesh("eight.off")], texels_per_unit=density)
     assert several[0].number_of_pages >= 2
-    with pytest.raises(ValueError, match=r"^at texels_per_unit .* need more than 1 pages .*max_pages"):
+    with pytest.raises(ValueError, match=r"^at texels_per_unit .* need more than 1 page of .*max_pages"):
         disk_uv.atlas(vertices, faces, texels_per_unit=density, max_pages=1)
     with pytest.raises(ValueError, match=r"does not fit a page of 1024 texels \(resolution\)"):
         disk_uv.atlas(vertices, faces, texels_per_unit=1e5, max_pages=10**9)
@@ -334,11 +335,59 @@ def test_bad_arrays_raise_value_error(change, message):
     ({"seed": -1}, "seed"),
     ({"max_charts": 0}, "max_charts must be None or at least 1"),
     ({"face_groups": numpy.zeros(3)}, "face_groups"),
+    # Floats would be truncated: 0.1 and 0.9 one material, NaN some material.
+    ({"materials": "floats"}, "materials must be an array of integers, not of dtype float64"),
+    ({"face_groups": "floats"}, "face_groups must be an array of integers, not of dtype float64"),
+    ({"max_pages": 0}, "max_pages must be at least 1"),
+    ({"max_pages": 1000}, "max_pages must be at most 999: pages are written as the UDIM tiles 1001 to 1999"),
+    ({"texels_per_unit": 5, "packer": "grid"}, "texels_per_unit needs packer='tight'"),
 ])
 def test_bad_options_raise_value_error(options, message):
     vertices, faces = mesh("eight.off")
+    options = {name: (numpy.linspace(0.1, 0.9, len(faces)) if isinstance(value, str) and value == "floats"
+                     else value)
+               for name, value in options.items()}
     with pytest.raises(ValueError, match=message):
         disk_uv.atlas(vertices, faces, **options)
+    # The same options, checked without a mesh (the batch's way).
+    if "materials" not in options and "face_groups" not in options and "seed" not in options:
+        with pytest.raises(ValueError, match=message):
+            disk_uv.check_options(**options)
+
+
+def test_check_options_takes_what_atlas_takes_and_refuses_unknown_keywords():
+    assert disk_uv.check_options() is None
+    assert disk_uv.check_options(texels_per_unit=1100, resolution=(2048, 512), max_pages=999) is None
+    with pytest.raises(TypeError, match="unknown options: colour"):
+        disk_uv.check_options(colour=3)
+
+
+def test_a_list_of_meshes_with_faces_is_refused_with_a_message():
+    vertices, faces = mesh("eight.off")
+    with pytest.raises(TypeError, match="with a list of meshes, faces must be None"):
+        disk_uv.atlas([(vertices, faces)], faces)
+
+
+def test_tiny_densities_are_refused_rather_than_collapsed():
+    vertices, faces = mesh("elephant.off")
+    # Doubles cannot hold the charts: refused by the packing.
+    with pytest.raises(ValueError, match="too small for double precision at texels_per_unit"):
+        disk_uv.atlas(vertices, faces, texels_per_unit=1e-13)
+    # Doubles can, float32 cannot: the arrays and the GLB are refused, the
+    # atlas itself is valid, and its charts below a texel are said.
+    with pytest.warns(RuntimeWarning, match="59 of 59 charts are smaller than one texel"):
+        atlas = disk_uv.atlas(vertices, faces, texels_per_unit=1e-3)
+    assert (signed_areas(atlas.uvs) > 0).all()
+    with pytest.raises(ValueError, match="float32 UVs cannot hold this atlas: [0-9]+ triangles"):
+        atlas.xatlas_arrays()
+    with pytest.raises(ValueError, match="32-bit float UVs"):
+        disk_uv.save_glb(os.devnull, atlas)
+
+
+def test_a_per_mesh_chart_budget_over_several_meshes_is_said():
+    a, b = mesh("eight.off"), mesh("elephant.off")
+    with pytest.warns(RuntimeWarning, match="charts in all: max_charts=3 is a budget for each of the 2 meshes"):
+        disk_uv.atlas([a, b], max_charts=3)
 
 
 @pytest.mark.parametrize("options, names", [
@@ -425,6 +474,13 @@ def test_a_progress_callback_sees_the_stages_and_can_cancel():
 
     with pytest.raises(ZeroDivisionError, match="raised by the callback"):
         disk_uv.atlas(vertices, faces, progress=failing)
+
+    class Unanswerable:
+        def __bool__(self):
+            raise ZeroDivisionError("raised by the answer's __bool__")
+
+    with pytest.raises(ZeroDivisionError, match="raised by the answer's __bool__"):
+        disk_uv.atlas(vertices, faces, progress=lambda *report: Unanswerable())
     with pytest.raises(disk_uv.Cancelled):
         disk_uv.segment(vertices, faces, progress=lambda *report: False)
     with pytest.raises(TypeError, match="progress must be None or a callable"):
