@@ -76,8 +76,11 @@ class Atlas:
 
     @property
     def pages(self):
+        # With several meshes, the report lists the pages of this mesh's charts, from its first chart on.
         page_of_chart = numpy.asarray(self.report["packing"]["page_of_chart"], dtype=numpy.uint32)
-        return page_of_chart[self.chart_ids] if len(page_of_chart) else numpy.zeros(len(self.chart_ids), numpy.uint32)
+        if not len(page_of_chart):
+            return numpy.zeros(len(self.chart_ids), numpy.uint32)
+        return page_of_chart[self.chart_ids - numpy.uint32(self.report.get("first_chart", 0))]
 
     def udim_uvs(self):
         """``uvs`` with each page moved to its UDIM tile: page ``p`` to
@@ -178,8 +181,9 @@ def atlas(vertices, faces=None, method=_disk_uv.default_parameterization_method,
     (xatlas' AddMesh, then Generate): each mesh gets the charts it would get
     alone, all charts are packed together, and the result is a list of
     :class:`Atlas`, one per mesh, with chart ids numbered across the meshes
-    (``report["first_chart"]``); ``face_groups``, ``materials`` and
-    ``seed`` then take one mesh only.
+    (``report["first_chart"]``; ``report["packing"]["page_of_chart"]``
+    lists the pages of the mesh's own charts, from that one on);
+    ``face_groups``, ``materials`` and ``seed`` then take one mesh only.
 
     Args:
         vertices: (N, 3) array of real numbers, or a list of (vertices, faces) pairs.
@@ -256,9 +260,14 @@ def atlas(vertices, faces=None, method=_disk_uv.default_parameterization_method,
         if not isinstance(vertices, (list, tuple)):
             raise ArgumentTypeError("atlas() takes vertices and faces, or a list of (vertices, faces) pairs, not %s"
                                     % type(vertices).__name__)
-        results = _disk_uv.atlas_of_meshes(list(vertices), options)
-        atlases = [Atlas(v, f, r["uvs"], r["chart_ids"], json.loads(r["report"]))
-                   for (v, f), r in zip(vertices, results)]
+        results, packing = _disk_uv.atlas_of_meshes(list(vertices), options)
+        # The pages' coverage is the common packing's: one list shared by all reports, not a copy in each.
+        page_efficiency = json.loads(packing)["page_efficiency"]
+        atlases = []
+        for (v, f), r in zip(vertices, results):
+            report = json.loads(r["report"])
+            report["packing"]["page_efficiency"] = page_efficiency
+            atlases.append(Atlas(v, f, r["uvs"], r["chart_ids"], report))
         if atlases:
             _warn_if_sparse(atlases[0].report["packing"]["efficiency"], atlases[0].report["total_charts"],
                             resolution, padding, texels_per_unit)

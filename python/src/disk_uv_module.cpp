@@ -501,8 +501,9 @@ py::dict run_atlas(const py::handle& vertices, const py::handle& faces, const py
 }
 
 // atlas([(vertices, faces), ...]): one atlas for several meshes, each
-// segmented alone (uv_atlas_of_meshes()); one result per mesh.
-py::list run_atlas_of_meshes(const py::sequence& parts, const py::dict& o)
+// segmented alone (uv_atlas_of_meshes()); one result per mesh, and the
+// common packing's JSON.
+py::tuple run_atlas_of_meshes(const py::sequence& parts, const py::dict& o)
 {
   for(const char* name : { "face_groups", "materials", "seed" })
     if(!o[name].is_none())
@@ -559,17 +560,19 @@ py::list run_atlas_of_meshes(const py::sequence& parts, const py::dict& o)
   py::list results;
   for(std::size_t i = 0; i < meshes.size(); ++i)
   {
-    DS::Atlas_report r = report.meshes[i];
-    r.packing = report.packing;  // the common packing
     DS::IO::Read_changes changes;
     changes.pinched_vertices_split = soups[i].pinched_vertices_split;
-    nlohmann::json json = DS::IO::atlas_report_json("<arrays>", meshes[i].number_of_vertices(), r, method_name,
-                                                     packer_name, 0., changes);
+    nlohmann::json json = DS::IO::atlas_report_json("<arrays>", meshes[i].number_of_vertices(), report.meshes[i],
+                                                     method_name, packer_name, 0., changes);
+    // The pages of this mesh's charts only (the common packing is returned
+    // once): with every chart's page in every report, many meshes cost
+    // their square.
+    json["packing"] = DS::IO::packing_report_json(report.packing, report.first_chart[i], report.first_chart[i + 1]);
     json["first_chart"] = report.first_chart[i];
     json["total_charts"] = report.first_chart.back();
     results.append(atlas_result(soups[i], meshes[i], patches[i], uvs[i], json.dump()));
   }
-  return results;
+  return py::make_tuple(results, DS::IO::packing_report_json(report.packing).dump());
 }
 
 py::array_t<std::uint32_t> run_segment(const py::handle& vertices, const py::handle& faces, const py::dict& o)

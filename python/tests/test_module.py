@@ -187,13 +187,19 @@ def test_a_fixed_texel_density_spreads_the_charts_over_pages(tmp_path):
     _, uvs, obj_faces = read_obj(tmp_path / "pages.obj")
     problems, tiles = udim_atlas_problems([uvs[t] for _, t in obj_faces], [t for _, t in obj_faces])
     assert problems == [] and tiles == list(range(1001, 1001 + paged.number_of_pages))
-    # Pages with several meshes in one atlas.
+    # Pages with several meshes in one atlas: each report lists the pages of
+    # its own charts, and the meshes' faces together are a valid UDIM atlas.
     several = disk_uv.atlas([(vertices, faces), mesh("eight.off")], texels_per_unit=density)
     assert several[0].number_of_pages >= 2
+    for atlas in several:
+        assert len(atlas.report["packing"]["page_of_chart"]) == atlas.number_of_charts
+        assert len(atlas.report["packing"]["page_efficiency"]) == atlas.number_of_pages
+    problems, tiles = udim_atlas_problems([uv for atlas in several for uv in atlas.udim_uvs()])
+    assert problems == [] and tiles == list(range(1001, 1001 + several[0].number_of_pages))
     with pytest.raises(ValueError, match=r"^at texels_per_unit .* need more than 1 page of .*max_pages"):
         disk_uv.atlas(vertices, faces, texels_per_unit=density, max_pages=1)
     with pytest.raises(ValueError, match=r"does not fit a page of 1024 texels \(resolution\)"):
-        disk_uv.atlas(vertices, faces, texels_per_unit=1e5, max_pages=10**9)
+        disk_uv.atlas(vertices, faces, texels_per_unit=10 * density, max_pages=999)
     with pytest.raises(ValueError, match=r"^texels_per_unit must be"):
         disk_uv.atlas(vertices, faces, texels_per_unit=-1.0)
     with pytest.warns(RuntimeWarning, match=r"at texels_per_unit="):

@@ -355,10 +355,11 @@ nlohmann::json several_report_json(const Several_atlas& s, const std::string& me
   nlohmann::json meshes = nlohmann::json::array();
   for(std::size_t i = 0; i < s.meshes.size(); ++i)
   {
-    DS::Atlas_report r = s.report.meshes[i];
-    r.packing = s.report.packing;  // the common packing
-    nlohmann::json mesh = DS_IO::atlas_report_json(s.inputs[i], s.meshes[i].number_of_vertices(), r, method,
-                                                     packer, 0., s.changes[i]);
+    nlohmann::json mesh = DS_IO::atlas_report_json(s.inputs[i], s.meshes[i].number_of_vertices(),
+                                                     s.report.meshes[i], method, packer, 0., s.changes[i]);
+    // The pages of its own charts: the common packing is written once, below.
+    mesh["packing"] =
+      DS_IO::packing_report_json(s.report.packing, s.report.first_chart[i], s.report.first_chart[i + 1]);
     mesh["first_chart"] = s.report.first_chart[i];
     meshes.push_back(std::move(mesh));
   }

@@ -13,9 +13,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 #include <sys/resource.h>
 
 namespace CGAL {
@@ -58,6 +60,26 @@ inline nlohmann::json packing_report_json(const CGAL::Disk_segmentation::Packing
            { "charts_below_a_texel", p.number_of_charts_below_a_texel },
            { "page_efficiency", p.page_efficiency },
            { "page_of_chart", p.page_of_chart } };
+}
+
+/// \ingroup PkgDiskSegmentationIO
+/// The packing of one mesh of several packed together (`uv_atlas_of_meshes()`),
+/// whose charts are `first_chart` to `end_chart - 1` of the common packing
+/// `p`: `efficiency`, `texels_per_unit` and `pages` of the common packing,
+/// and `page_of_chart` for this mesh's charts only, from `first_chart` on.
+/// The common `page_efficiency` and the other meshes' charts are left to the
+/// common packing's report: repeated for every mesh, they made the reports
+/// of many meshes quadratic in size.
+inline nlohmann::json packing_report_json(const CGAL::Disk_segmentation::Packing_report& p, std::size_t first_chart,
+                                          std::size_t end_chart)
+{
+  const std::size_t end = (std::min)(end_chart, p.page_of_chart.size());
+  const std::size_t first = (std::min)(first_chart, end);
+  return { { "efficiency", p.efficiency },
+           { "texels_per_unit", p.texels_per_unit },
+           { "pages", p.number_of_pages },
+           { "page_of_chart", std::vector<std::size_t>(p.page_of_chart.begin() + first,
+                                                       p.page_of_chart.begin() + end) } };
 }
 
 /// \ingroup PkgDiskSegmentationIO
