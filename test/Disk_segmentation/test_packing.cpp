@@ -785,6 +785,90 @@ TEST(Packing, FixedTexelDensitySpreadsTheChartsOverPages)
   EXPECT_TRUE(snapshot(again) == snapshot(paged));
 }
 
+// The pages as they were made before a page skipped the charts it cannot
+// hold: each page tries every chart left, largest first.
+std::vector<std::size_t> pages_trying_every_chart(const Case& c, double texels_per_unit,
+                                                  std::vector<DS::internal::Profile_placement>& placement)
+{
+  namespace I = CGAL::Disk_segmentation::internal;
+  const auto np = DS::parameters::texture_resolution(512u).padding_in_texels(2.).texels_per_unit(texels_per_unit)
+                    .number_of_threads(1u);
+  const I::Packing_settings s = I::packing_settings(np);
+  I::Chart_set<Mesh> charts;
+  I::collect_charts(c.mesh, c.patch, c.uv, true, np, charts);
+  I::frame_charts(s.method, 1u, charts);
+  std::vector<double> density(charts.size());
+  for(std::size_t p = 0; p < charts.size(); ++p)
+    density[p] = std::sqrt(charts.surface_area[p] / charts.uv_area[p]);
+  const I::Shape_input shapes(charts, density);
+  const double scale = s.texels_per_unit / (s.resolution * charts.length_scale);
+  const std::size_t columns = I::shape_columns(s);
+  I::Raster_packer packer(columns, I::shape_pad_cells(s, columns), I::shape_rows(s, columns));
+  std::vector<std::size_t> left = I::largest_first(shapes.charts), page_of_chart(charts.size(), 0), still_left;
+  placement.assign(charts.size(), I::Profile_placement());
+  for(std::size_t page = 0; !left.empty(); ++page)
+  {
+    packer.start_page();
+    still_left.clear();
+    for(std::size_t i : left)
+    {
+      std::size_t need = 0;
+      if(packer.place_on_page(shapes.charts[i], scale, placement[i], need))
+        page_of_chart[i] = page;
+      else
+        still_left.push_back(i);
+    }
+    if(still_left.size() == left.size())
+      break;
+    left.swap(still_left);
+  }
+  return page_of_chart;
+}
+
+TEST(Packing, PagesSkipOnlyTheChartsThatCannotFit)
+{
+  // 144 equal squares (one class of footprints) and larger blocks.
+  std::vector<int> cuts;
+  for(int x = 0; x <= 12; ++x) cuts.push_back(x);
+  cuts.push_back(17);
+  cuts.push_back(25);
+  cuts.push_back(36);
+  Case fit = grid_case(cuts, cuts);
+  const DS::Packing_report one_page = pack_and_check(fit, DS::Packing_method::TIGHT, 512, 2.);
+  for(double times : { 1.5, 2., 3. })
+  {
+    Case paged = grid_case(cuts, cuts);
+    const double density = times * one_page.texels_per_unit;
+    std::vector<DS::internal::Profile_placement> expected;
+    const std::vector<std::size_t> expected_pages = pages_trying_every_chart(paged, density, expected);
+    const DS::Packing_report r = DS::pack_patches(
+      paged.mesh, paged.patch, paged.uv,
+      DS::parameters::texture_resolution(512u).padding_in_texels(2.).texels_per_unit(density).number_of_threads(1u));
+    EXPECT_GT(r.number_of_pages, 1u);
+    EXPECT_EQ(r.page_of_chart, expected_pages) << "at " << times << " times the one-page density";
+    // The same places (the layout on any number of threads).
+    namespace I = CGAL::Disk_segmentation::internal;
+    const auto np = DS::parameters::texture_resolution(512u).padding_in_texels(2.).texels_per_unit(density);
+    I::Chart_set<Mesh> charts;
+    Case fresh = grid_case(cuts, cuts);
+    I::collect_charts(fresh.mesh, fresh.patch, fresh.uv, true, np, charts);
+    I::frame_charts(DS::Packing_method::TIGHT, 1u, charts);
+    double global_scale = 0.;
+    std::vector<std::size_t> pages;
+    const std::vector<I::Chart_similarity> layout = I::tight_layout(charts, I::packing_settings(np), global_scale, pages);
+    std::vector<double> density_of(charts.size());
+    for(std::size_t p = 0; p < charts.size(); ++p)
+      density_of[p] = std::sqrt(charts.surface_area[p] / charts.uv_area[p]);
+    const std::vector<I::Chart_similarity> oracle = I::shape_similarities(charts, expected, density_of, global_scale);
+    ASSERT_EQ(layout.size(), oracle.size());
+    for(std::size_t p = 0; p < layout.size(); ++p)
+      EXPECT_TRUE(layout[p].scale == oracle[p].scale && layout[p].tx == oracle[p].tx && layout[p].ty == oracle[p].ty)
+        << "chart " << p;
+    std::cout << "[ " << paged.number_of_patches << " charts at " << times << " times the one-page density ] "
+              << r.number_of_pages << " pages, as when each page tried every chart left" << std::endl;
+  }
+}
+
 TEST(Packing, NonSquareTexturesKeepTheTexelsSquare)
 {
   std::vector<int> cuts;

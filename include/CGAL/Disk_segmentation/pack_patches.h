@@ -68,7 +68,11 @@ namespace Disk_segmentation {
 /// is not searched: every chart gets that texel density, and pages are
 /// filled one after the other by the raster packer, each with the charts
 /// left that fit on it, largest first (the xatlas and UVAtlas "atlas
-/// count"). Each chart lies whole in the unit square of its page;
+/// count"). A page does not try the charts that cannot fit it: those whose
+/// cells are more than the page has free, and those with the same cells in
+/// every turn as one that found no room on it (copies of a part), so that
+/// the pages cost what they place plus, per page, the distinct charts that
+/// fail. Each chart lies whole in the unit square of its page;
 /// `Packing_report::page_of_chart` says which page that is. A chart that
 /// does not fit an empty page, or more pages than `max_number_of_pages`,
 /// throws `Input_error` naming the chart's size in texels.

@@ -17,7 +17,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <limits>
 #include <sstream>
+#include <unordered_map>
 #include <vector>
 
 namespace CGAL {
@@ -253,6 +256,139 @@ std::vector<Chart_similarity> shape_layout(const Chart_set<TriangleMesh>& charts
 // rounding of the final similarity (coordinates are at most 1).
 constexpr double packing_rounding_margin = 1e-12;
 
+// The charts left by the pages filled so far, in the order each page tries
+// them, and what a page need not try: a chart whose zone covers more cells
+// than the page has free, and the charts of the same footprints in every
+// turn (a class: copies of a part) as one that found no room on the page.
+// A min-tree over the positions holds, at each class's first chart left,
+// the cells its charts need (0 at a chart not tried yet, which has no class
+// yet; none elsewhere), and finds the next chart to try in O(log n). Each
+// page tried every chart left, which made the pages quadratic (one triangle
+// per page of 64 texels: 1000 pages 34 s, 4000 341 s; now 0.26 and 0.94 s).
+class Paged_charts
+{
+public:
+  static constexpr std::size_t none = (std::numeric_limits<std::size_t>::max)();
+
+  explicit Paged_charts(std::size_t n) : class_of_(n, none), leaves_(1)
+  {
+    while(leaves_ < n)
+      leaves_ *= 2;
+    need_.assign(2 * leaves_, none);
+    std::fill(need_.begin() + leaves_, need_.begin() + leaves_ + n, std::size_t(0));
+    for(std::size_t v = leaves_ - 1; v > 0; --v)
+      need_[v] = (std::min)(need_[2 * v], need_[2 * v + 1]);
+  }
+
+  // The first chart from position `from` on that a page with `free_cells`
+  // cells free tries, or none.
+  std::size_t next(std::size_t from, std::size_t free_cells) const
+  {
+    return first(1, 0, leaves_, from, free_cells);
+  }
+
+  // The first chart left, or none; once a page is over (end_page()).
+  std::size_t front() const { return first(1, 0, leaves_, 0, none - 1); }
+
+  std::size_t class_of(std::size_t k) const { return class_of_[k]; }
+
+  // The position of the first chart of class `c`, to compare footprints.
+  std::size_t representative(std::size_t c) const { return classes_[c].representative; }
+
+  // A new class for the chart at `k` (tried for the first time), whose
+  // charts need `cells` free cells (none - 1: they fit no page).
+  std::size_t new_class(std::size_t k, std::size_t cells)
+  {
+    Chart_class c;
+    c.need = (std::min)(cells, none - 1);
+    c.representative = k;
+    classes_.push_back(c);
+    class_of_[k] = classes_.size() - 1;
+    return classes_.size() - 1;
+  }
+
+  // The chart at `k`, tried for the first time, is of class `c`.
+  void join(std::size_t k, std::size_t c) { class_of_[k] = c; }
+
+  // The chart at `k` was placed on the page: the next of its class is tried
+  // after it.
+  void placed(std::size_t k)
+  {
+    Chart_class& c = classes_[class_of_[k]];
+    set(k, none);
+    if(c.head == c.left.size() || c.left[c.head] != k)
+      return;  // tried for the first time: not in `left`
+    ++c.head;
+    if(c.head < c.left.size())
+      set(c.left[c.head], c.need);
+  }
+
+  // The chart at `k` found no room on the page: nor would the others of its
+  // class, until the next page.
+  void failed(std::size_t k)
+  {
+    const std::size_t id = class_of_[k];
+    Chart_class& c = classes_[id];
+    // Unless it is the class's first chart left, it is tried for the first
+    // time, after all the others of its class (the first page tries all).
+    if(c.head == c.left.size() || c.left[c.head] != k)
+      c.left.push_back(k);
+    set(k, none);
+    if(!c.failed)
+    {
+      c.failed = true;
+      failed_.push_back(id);
+    }
+  }
+
+  // The classes that failed on the page are tried again on the next.
+  void end_page()
+  {
+    for(std::size_t id : failed_)
+    {
+      Chart_class& c = classes_[id];
+      c.failed = false;
+      if(c.head < c.left.size())
+        set(c.left[c.head], c.need);
+    }
+    failed_.clear();
+  }
+
+private:
+  struct Chart_class
+  {
+    std::size_t need = 0, representative = 0;
+    std::vector<std::size_t> left;  // positions of its charts tried and not placed, from `head` on
+    std::size_t head = 0;
+    bool failed = false;            // on the current page
+  };
+
+  void set(std::size_t k, std::size_t cells)
+  {
+    k += leaves_;
+    need_[k] = cells;
+    for(k /= 2; k > 0; k /= 2)
+      need_[k] = (std::min)(need_[2 * k], need_[2 * k + 1]);
+  }
+
+  std::size_t first(std::size_t node, std::size_t begin, std::size_t end, std::size_t from, std::size_t cells) const
+  {
+    if(end <= from || need_[node] > cells)
+      return none;
+    if(end - begin == 1)
+      return begin;
+    const std::size_t middle = begin + (end - begin) / 2;
+    const std::size_t left = first(2 * node, begin, middle, from, cells);
+    return left != none ? left : first(2 * node + 1, middle, end, from, cells);
+  }
+
+  std::vector<std::size_t> class_of_;  // per position
+  std::vector<Chart_class> classes_;
+  std::vector<std::size_t> failed_;    // classes that failed on the current page
+  std::size_t leaves_;
+  std::vector<std::size_t> need_;      // per node of the tree, the least need below it
+};
+
 // The layout at the fixed density `s.texels_per_unit`: pages are filled
 // one after the other by the raster packer, each with the charts left that
 // fit on it, largest first; `page_of_chart` says where each went.
@@ -281,22 +417,63 @@ std::vector<Chart_similarity> paged_layout(const Chart_set<TriangleMesh>& charts
   const std::size_t columns = shape_columns(s);
   Raster_packer packer(columns, shape_pad_cells(s, columns), shape_rows(s, columns));
   packer.set_parallel(s.threads != 1);
-  std::vector<Profile_placement> placement(n), on_page;
-  std::vector<bool> placed;
-  std::vector<std::size_t> left = largest_first(shapes.charts), still_left;
+  std::vector<Profile_placement> placement(n);
+  const std::vector<std::size_t> order = largest_first(shapes.charts);
+  // Each page tries the charts left in this order, but those it could not
+  // hold (Paged_charts): the layout is the same.
+  Paged_charts left(n);
+  std::unordered_map<std::size_t, std::vector<std::size_t> > classes_of_hash;
+  std::vector<long> key, other;
+  // The class of the chart at k, just tried for the first time: its
+  // footprints' key is compared with those of the classes of the same hash.
+  auto classify = [&](std::size_t k, std::size_t need) {
+    packer.footprint_key(key);
+    std::uint64_t hash = 0xcbf29ce484222325ull;
+    for(long v : key)
+      hash = (hash ^ static_cast<std::uint64_t>(v)) * 0x100000001b3ull;
+    std::vector<std::size_t>& same_hash = classes_of_hash[static_cast<std::size_t>(hash)];
+    for(std::size_t c : same_hash)
+    {
+      packer.rasterize(shapes.charts[order[left.representative(c)]], scale);
+      packer.footprint_key(other);
+      if(other == key)
+        return left.join(k, c);
+    }
+    same_hash.push_back(left.new_class(k, need));
+  };
   page_of_chart.assign(n, 0);
   std::size_t trial = 0;
-  for(std::size_t page = 0; !left.empty(); ++page)
+  for(std::size_t page = 0; left.front() != Paged_charts::none; ++page)
   {
     if(page == s.max_pages)
       throw too_many_pages();
     report_packing_trial(s, trial);
     std::size_t count = 0;
-    within_arena(s.threads, [&] { count = packer.fill_page(shapes.charts, left, scale, on_page, placed); });
+    within_arena(s.threads, [&] {
+      packer.start_page();
+      for(std::size_t k = left.next(0, packer.free_cells()); k != Paged_charts::none;
+          k = left.next(k + 1, packer.free_cells()))
+      {
+        const std::size_t i = order[k];
+        std::size_t need = 0;
+        const bool fits = packer.place_on_page(shapes.charts[i], scale, placement[i], need);
+        if(left.class_of(k) == Paged_charts::none)
+          classify(k, need);
+        if(fits)
+        {
+          left.placed(k);
+          page_of_chart[i] = page;
+          ++count;
+        }
+        else
+          left.failed(k);
+      }
+    });
+    left.end_page();
     if(count == 0)
     {
       // None of them fits an empty page: the largest is named.
-      const std::size_t p = left.front();
+      const std::size_t p = order[left.front()];
       const double to_texels = scale * density[p] * s.resolution;
       std::ostringstream message;
       message << "pack_patches: at texels_per_unit " << s.texels_per_unit << ", " << patch_name(p) << " is "
@@ -306,16 +483,6 @@ std::vector<Chart_similarity> paged_layout(const Chart_set<TriangleMesh>& charts
               << "; lower texels_per_unit or raise texture_resolution";
       throw Input_error(message.str());
     }
-    still_left.clear();
-    for(std::size_t i : left)
-      if(placed[i])
-      {
-        placement[i] = on_page[i];
-        page_of_chart[i] = page;
-      }
-      else
-        still_left.push_back(i);
-    left.swap(still_left);
   }
   return shape_similarities(charts, placement, density, scale);
 }

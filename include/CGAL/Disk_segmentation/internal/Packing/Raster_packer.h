@@ -139,45 +139,74 @@ public:
   {
     out.assign(charts.size(), Profile_placement());
     rows_ = 2 * page_rows_;
-    return pack(charts, largest_first(charts), scale, out, nullptr) && used_rows_ <= page_rows_;
+    return pack(charts, largest_first(charts), scale, out) && used_rows_ <= page_rows_;
   }
 
-  // Fills one page (the square) at `scale` with the charts of `candidates`,
-  // largest first; a chart that fits nowhere on it is left for the next
-  // page. `placed[i]` is set for the charts placed (their `out[i]` then
-  // holds their position); returns how many.
-  std::size_t fill_page(const std::vector<Profile_chart>& charts, const std::vector<std::size_t>& candidates,
-                        double scale, std::vector<Profile_placement>& out, std::vector<bool>& placed)
+  // Pages filled one after the other: start_page() empties the page (the
+  // square), then each place_on_page() places a chart where run() would.
+  void start_page()
   {
-    out.resize(charts.size());
-    placed.assign(charts.size(), false);
-    std::vector<std::size_t> order = largest_first(charts);
-    std::vector<bool> candidate(charts.size(), false);
-    for(std::size_t i : candidates)
-      candidate[i] = true;
-    order.erase(std::remove_if(order.begin(), order.end(), [&](std::size_t i) { return !candidate[i]; }),
-                order.end());
     rows_ = page_rows_;
-    pack(charts, order, scale, out, &placed);
-    return static_cast<std::size_t>(std::count(placed.begin(), placed.end(), true));
+    clear();
   }
+
+  // The cells of the page no chart covers: a chart whose zone covers more
+  // fits nowhere on it.
+  std::size_t free_cells() const { return free_cells_; }
+
+  // Places `chart` at `scale` on the page, in `out`, if it fits anywhere.
+  // `zone_area` gets the fewest cells its zone covers in the turns it may
+  // take (the largest std::size_t if none): at this scale the chart fits
+  // no page with fewer free_cells(), which the caller need not try.
+  bool place_on_page(const Profile_chart& chart, double scale, Profile_placement& out, std::size_t& zone_area)
+  {
+    return place_chart(chart, scale, out, zone_area) == Fit::placed;
+  }
+
+  // The cells of the chart last rasterized (by place_on_page() or
+  // rasterize()) in every turn it may take, as a list of numbers: two
+  // charts with the same key are placed alike on any page, or fail alike.
+  void footprint_key(std::vector<long>& key) const
+  {
+    key.clear();
+    for(int eighths = 0; eighths < 8; ++eighths)
+    {
+      key.push_back(usable_[eighths] ? 1 : 0);
+      if(!usable_[eighths])
+        continue;
+      const Footprint& f = footprints_[eighths];
+      key.insert(key.end(), f.shape.begin(), f.shape.end());
+      for(long r = 0; r < f.height; ++r)
+      {
+        key.push_back(static_cast<long>(f.core_begin[r + 1] - f.core_begin[r]));
+        for(std::size_t j = f.core_begin[r]; j < f.core_begin[r + 1]; ++j)
+        {
+          key.push_back(f.core[j].first);
+          key.push_back(f.core[j].second);
+        }
+      }
+    }
+  }
+
+  // Rasterizes `chart` at `scale` as place_on_page() would, without placing
+  // it: for footprint_key().
+  void rasterize(const Profile_chart& chart, double scale) { rasterize_turns(chart, scale); }
 
 private:
-  // Places the charts of `order` in turn on an empty strip of rows_ rows.
-  // Without `placed`, stops at the first chart that fits nowhere (returns
-  // false); with it, skips that chart.
-  bool pack(const std::vector<Profile_chart>& charts, const std::vector<std::size_t>& order, double scale,
-            std::vector<Profile_placement>& out, std::vector<bool>* placed)
+  enum class Fit { too_large, no_room, placed };
+
+  // An empty strip of rows_ rows.
+  void clear()
   {
     atlas_.reset(rows_, n_);
     longest_free_.assign(rows_, static_cast<long>(n_));
     occupied_run_.assign(rows_ * n_, 0);
     free_run_.resize(rows_ * n_);
     used_rows_ = 0;
-    std::size_t used = 0;
     blocks_per_row_ = (n_ >> block_bits) + 1;
     block_longest_.resize(rows_ * blocks_per_row_);
     lowest_row_.clear();
+    free_cells_ = rows_ * n_;
     for(std::size_t r = 0; r < rows_; ++r)
     {
       for(std::size_t c = 0; c < n_; ++c)
@@ -185,59 +214,80 @@ private:
       for(std::size_t b = 0; b < blocks_per_row_; ++b)
         block_longest_[r * blocks_per_row_ + b] = static_cast<std::uint16_t>(n_ - (std::min)(n_, b << block_bits));
     }
+  }
+
+  // Places the charts of `order` in turn on an empty strip of rows_ rows;
+  // stops at the first chart that fits nowhere (returns false).
+  bool pack(const std::vector<Profile_chart>& charts, const std::vector<std::size_t>& order, double scale,
+            std::vector<Profile_placement>& out)
+  {
+    clear();
+    std::size_t zone_area = 0;
     for(std::size_t i : order)
     {
-      // Small charts gain little from more orientations and are most of the
-      // search on meshes with hundreds of charts. Measured on cheese (964
-      // charts): 8 orientations for all 0.354 of the square in 10.1 s, as
-      // here 0.334 in 1.2 s; ChineseDragon-10kv 0.655 in 0.89 s, as here
-      // 0.658 in 0.57 s.
-      const double cells = charts[i].area * std::pow(scale * charts[i].density * double(n_), 2);
-      const int step = cells < 100. ? 4 : cells < 400. ? 2 : 1;
-      // Measured with two threads on 30 atlases: 0.77 of the time with the
-      // turns of the large charts side by side, 0.67 with those of all
-      // charts (cheese, 922 charts: 0.60). Not below 64 cells, where
-      // handing the turns out costs more than their search once full rows
-      // are skipped (see lowest_row()): 20k tetrahedra beside a torus
-      // 2.6 -> 0.9 s, cheese and b9_mesh unchanged.
-      const bool side_by_side = parallel_ && cells >= 64.;
-      for_each_piece(8, side_by_side, [&](int eighths) {
-        usable_[eighths] = eighths % step == 0 && footprint(charts[i], scale, eighths, footprints_[eighths]);
-      });
-      if(std::find(usable_, usable_ + 8, true) == usable_ + 8)
+      const Fit fit = place_chart(charts[i], scale, out[i], zone_area);
+      if(fit != Fit::placed)
       {
-        if(placed != nullptr)
-          continue;
-        used_rows_ = 0;
+        used_rows_ = fit == Fit::too_large ? 0 : rows_ + 1;
         return false;
       }
-      // The orientation and position where the chart's top ends lowest,
-      // then the lowest, then the leftmost. Measured on the 23 shipped
-      // meshes (median UV area over the square): 0.558 with the lowest
-      // bottom first, 0.586 with the lowest top; on 90 atlases (30 meshes,
-      // 3 bounds) it packs 0.008-0.020 more on the mean, better on 56, worse
-      // on 12.
-      const Position best = side_by_side ? lowest_position_by_turn() : lowest_position();
-      if(best.turns < 0)
-      {
-        if(placed != nullptr)
-          continue;
-        used_rows_ = rows_ + 1;
-        return false;
-      }
-      const long best_x = best.x, best_y = best.y;
-      const int best_turns = best.turns;
-      place(footprints_[best_turns], best_x, best_y);
-      used = (std::max)(used, static_cast<std::size_t>(best_y + footprints_[best_turns].height));
-      out[i].turns = best_turns / 2;
-      out[i].diagonal = best_turns % 2 == 1;
-      out[i].x = double(best_x + static_cast<long>(pad_)) / double(n_);
-      out[i].y = double(best_y + static_cast<long>(pad_)) / double(n_);
-      if(placed != nullptr)
-        (*placed)[i] = true;
     }
-    used_rows_ = used;
     return true;
+  }
+
+  // Places one chart where its top ends lowest (see below); used_rows_
+  // grows to its top.
+  Fit place_chart(const Profile_chart& chart, double scale, Profile_placement& out, std::size_t& zone_area)
+  {
+    const bool side_by_side = rasterize_turns(chart, scale);
+    zone_area = (std::numeric_limits<std::size_t>::max)();
+    for(int eighths = 0; eighths < 8; ++eighths)
+      if(usable_[eighths])
+        zone_area = (std::min)(zone_area, footprints_[eighths].zone_area);
+    if(std::find(usable_, usable_ + 8, true) == usable_ + 8)
+      return Fit::too_large;
+    // The orientation and position where the chart's top ends lowest,
+    // then the lowest, then the leftmost. Measured on the 23 shipped
+    // meshes (median UV area over the square): 0.558 with the lowest
+    // bottom first, 0.586 with the lowest top; on 90 atlases (30 meshes,
+    // 3 bounds) it packs 0.008-0.020 more on the mean, better on 56, worse
+    // on 12.
+    const Position best = side_by_side ? lowest_position_by_turn() : lowest_position();
+    if(best.turns < 0)
+      return Fit::no_room;
+    const long best_x = best.x, best_y = best.y;
+    const int best_turns = best.turns;
+    place(footprints_[best_turns], best_x, best_y);
+    used_rows_ = (std::max)(used_rows_, static_cast<std::size_t>(best_y + footprints_[best_turns].height));
+    out.turns = best_turns / 2;
+    out.diagonal = best_turns % 2 == 1;
+    out.x = double(best_x + static_cast<long>(pad_)) / double(n_);
+    out.y = double(best_y + static_cast<long>(pad_)) / double(n_);
+    return Fit::placed;
+  }
+
+  // Rasterizes the chart in the turns it may take (usable_, footprints_);
+  // returns whether its turns are searched side by side.
+  bool rasterize_turns(const Profile_chart& chart, double scale)
+  {
+    // Small charts gain little from more orientations and are most of the
+    // search on meshes with hundreds of charts. Measured on cheese (964
+    // charts): 8 orientations for all 0.354 of the square in 10.1 s, as
+    // here 0.334 in 1.2 s; ChineseDragon-10kv 0.655 in 0.89 s, as here
+    // 0.658 in 0.57 s.
+    const double cells = chart.area * std::pow(scale * chart.density * double(n_), 2);
+    const int step = cells < 100. ? 4 : cells < 400. ? 2 : 1;
+    // Measured with two threads on 30 atlases: 0.77 of the time with the
+    // turns of the large charts side by side, 0.67 with those of all
+    // charts (cheese, 922 charts: 0.60). Not below 64 cells, where
+    // handing the turns out costs more than their search once full rows
+    // are skipped (see lowest_row()): 20k tetrahedra beside a torus
+    // 2.6 -> 0.9 s, cheese and b9_mesh unchanged.
+    const bool side_by_side = parallel_ && cells >= 64.;
+    for_each_piece(8, side_by_side, [&](int eighths) {
+      usable_[eighths] = eighths % step == 0 && footprint(chart, scale, eighths, footprints_[eighths]);
+    });
+    return side_by_side;
   }
 
 public:
@@ -353,6 +403,7 @@ private:
   struct Footprint
   {
     long width = 0, height = 0;
+    std::size_t core_area = 0, zone_area = 0;  // in cells
     std::vector<Interval> core, zone;
     std::vector<std::size_t> core_begin, zone_begin;  // per row, and the end
     std::vector<long> longest;  // per row, the zone's longest interval
@@ -453,6 +504,7 @@ private:
 
   void place(const Footprint& f, long x, long y)
   {
+    free_cells_ -= f.core_area;
     for(long r = 0; r < f.height; ++r)
     {
       const std::size_t row = static_cast<std::size_t>(y + r);
@@ -572,6 +624,7 @@ private:
     f.height = rows + 2 * pad;
     zone_cells.reset(static_cast<std::size_t>(f.height), static_cast<std::size_t>(f.width));
     f.core.clear();
+    f.core_area = 0;
     f.core_begin.assign(1, 0);
     for(long r = 0; r < pad; ++r)
       f.core_begin.push_back(0);
@@ -583,6 +636,7 @@ private:
       {
         const std::size_t end = (std::min)(cols, cells.first_clear(static_cast<std::size_t>(r), c));
         f.core.emplace_back(static_cast<long>(c) + pad, static_cast<long>(end) + pad);
+        f.core_area += end - c;
         for(long d = 0; d <= 2 * pad; ++d)
           zone_cells.set(static_cast<std::size_t>(r + d), c, end - 1 + static_cast<std::size_t>(2 * pad));
         if(end >= cols)
@@ -594,6 +648,7 @@ private:
     for(long r = 0; r < pad; ++r)
       f.core_begin.push_back(f.core.size());
     f.zone.clear();
+    f.zone_area = 0;
     f.zone_begin.assign(1, 0);
     f.longest.assign(static_cast<std::size_t>(f.height), 0);
     const std::size_t width = static_cast<std::size_t>(f.width);
@@ -604,6 +659,7 @@ private:
       {
         const std::size_t end = (std::min)(width, zone_cells.first_clear(static_cast<std::size_t>(r), c));
         f.zone.emplace_back(static_cast<long>(c), static_cast<long>(end));
+        f.zone_area += end - c;
         f.longest[r] = (std::max)(f.longest[r], static_cast<long>(end - c));
         if(end >= width)
           break;
@@ -657,6 +713,7 @@ private:
 
   std::size_t n_, page_rows_, rows_, pad_;
   std::size_t used_rows_ = 0;
+  std::size_t free_cells_ = 0;
   Cell_rows atlas_;
   std::vector<long> longest_free_;
   std::vector<std::uint16_t> free_run_, occupied_run_;  // per cell, row by row
