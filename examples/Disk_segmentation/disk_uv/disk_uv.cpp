@@ -573,6 +573,7 @@ struct Atlas_outputs
   disk_uv::Output_files files;
   std::vector<disk_uv::Output_files::Writer> writers;
   std::vector<std::string> page_pictures;
+  std::vector<std::vector<Mesh::Face_index> > page_faces;
   Mesh mesh;
   Patch_map patch;
   UV_map uv;
@@ -636,12 +637,14 @@ struct Atlas_outputs
       throw disk_uv::Tool_error("--atlas-png: the " + std::to_string(pages) + " pages need a picture each, named " +
                                 "after a regular file's name (atlas.png: atlas.1001.png, ...); '" + png_path +
                                 "' is not a regular file");
+    // Each picture draws the faces of its page only, not all of them.
+    page_faces = DS_IO::faces_of_pages(mesh, patch, packing.page_of_chart);
     for(std::size_t page = 0; page < pages; ++page)
     {
       const unsigned int tile = DS_IO::udim_tile(page);
       page_pictures.push_back(pages == 1 ? png_path : page_file_name(png_path, tile));
-      add("--atlas-png", page_pictures.back(), [this, tile](std::ostream& o) {
-        DS_IO::write_atlas_PNG(o, mesh, patch, uv, width, height, tile);
+      add("--atlas-png", page_pictures.back(), [this, tile, page](std::ostream& o) {
+        DS_IO::write_atlas_PNG_of_faces(o, mesh, page_faces[page], patch, uv, width, height, tile);
       });
     }
   }

@@ -83,6 +83,36 @@ void move_pages_to_udim_tiles(const TriangleMesh& mesh, FacePatchMap patch, UVMa
   }
 }
 
+/// \ingroup PkgDiskSegmentationIO
+///
+/// The faces of each page: entry `k` lists, in the order of `faces(mesh)`,
+/// the faces of the charts on page `k` (`page_of_chart`), those that
+/// `write_atlas_PNG_of_faces()` draws for tile `udim_tile(k)` once the pages
+/// were moved to their tiles.
+///
+/// @tparam TriangleMesh, FacePatchMap as in `write_atlas_OBJ()`
+///
+/// @throws Input_error if a face's patch id has no entry in `page_of_chart`
+template <typename TriangleMesh, typename FacePatchMap>
+std::vector<std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> >
+faces_of_pages(const TriangleMesh& mesh, FacePatchMap patch, const std::vector<std::size_t>& page_of_chart)
+{
+  static_assert(CGAL::Disk_segmentation::internal::Check_patch_map<FacePatchMap>::value, "");
+  std::vector<std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> > pages;
+  for(auto f : faces(mesh))
+  {
+    const std::size_t chart = static_cast<std::size_t>(get(patch, f));
+    if(chart >= page_of_chart.size())
+      throw Input_error("faces_of_pages: chart " + std::to_string(chart) + " has no page (page_of_chart has " +
+                        std::to_string(page_of_chart.size()) + " entries)");
+    const std::size_t page = page_of_chart[chart];
+    if(page >= pages.size())
+      pages.resize(page + 1);
+    pages[page].push_back(f);
+  }
+  return pages;
+}
+
 } // namespace IO
 } // namespace Disk_segmentation
 } // namespace CGAL

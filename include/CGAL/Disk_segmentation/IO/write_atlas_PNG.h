@@ -74,35 +74,16 @@ constexpr unsigned int max_atlas_png_resolution = 16384;
 
 /// \ingroup PkgDiskSegmentationIO
 ///
-/// Draws the atlas layout as an RGB PNG picture of `resolution` x
-/// `height` pixels (`resolution` x `resolution` when `height` is 0),
-/// \f$ v \f$ up (row 0 is \f$ v = 1 \f$): white
-/// background, the faces of each chart filled with `chart_color()` of its
-/// id, chart borders (edges between two charts and mesh borders) as dark
-/// 1-pixel lines, and faces whose UV orientation is negative in pure red,
-/// drawn last (at least the pixel of their centroid) so that no fold goes
-/// unseen. A pixel is filled when its center is in a triangle.
+/// `write_atlas_PNG()` drawing only the faces of `face_range` (of those, the
+/// ones in `tile`), for instance those of one page (`faces_of_pages()`):
+/// the pictures of `P` pages then take \f$ O(F + P R^2) \f$ time, not
+/// \f$ O(P F + P R^2) \f$.
 ///
-/// Needs stb (Debian's `libstb-dev`, pkg-config `stb`, which also provides
-/// the compiled implementation): include this header only where it is
-/// available.
-///
-/// @tparam TriangleMesh, FacePatchMap, UVMap as in `write_atlas_OBJ()`
-///
-/// @throws Input_error if `resolution` or `height` is above `max_atlas_png_resolution`, `resolution` is 0,
-///         or `tile` is below 1001
-/// @throws std::runtime_error if stb or the stream fails
-///
-/// With `tile` (a UDIM tile number, `1001 + i + 10 j` for the square
-/// \f$ [i, i+1] \times [j, j+1] \f$, `0 <= i < 10`), only the faces whose
-/// UV centroid lies in that square are drawn, moved to \f$ [0,1]^2 \f$: one
-/// picture per page of an atlas whose pages are laid out as UDIM tiles.
-///
-/// Complexity: \f$ O(F + R^2) \f$ time and \f$ O(R^2) \f$ memory for `F`
-/// faces and resolution `R`.
-template <typename TriangleMesh, typename FacePatchMap, typename UVMap>
-void write_atlas_PNG(std::ostream& out, const TriangleMesh& mesh, FacePatchMap patch, UVMap uv,
-                     unsigned int resolution, unsigned int height = 0, unsigned int tile = 1001)
+/// @tparam FaceRange a range of `face_descriptor`
+template <typename TriangleMesh, typename FaceRange, typename FacePatchMap, typename UVMap>
+void write_atlas_PNG_of_faces(std::ostream& out, const TriangleMesh& mesh, const FaceRange& face_range,
+                              FacePatchMap patch, UVMap uv, unsigned int resolution, unsigned int height = 0,
+                              unsigned int tile = 1001)
 {
   static_assert(CGAL::Disk_segmentation::internal::Check_patch_map<FacePatchMap>::value, "");
   typedef boost::graph_traits<TriangleMesh> GT;
@@ -147,7 +128,7 @@ void write_atlas_PNG(std::ostream& out, const TriangleMesh& mesh, FacePatchMap p
 
   std::vector<std::vector<P2> > flipped; // the fan triangles with negative UV area, in pixels
   std::vector<P2> corners;
-  for(face_descriptor f : faces(mesh))
+  for(face_descriptor f : face_range)
   {
     if(!in_tile(f))
       continue;
@@ -168,7 +149,7 @@ void write_atlas_PNG(std::ostream& out, const TriangleMesh& mesh, FacePatchMap p
     }
   }
 
-  for(face_descriptor f : faces(mesh))
+  for(face_descriptor f : face_range)
   {
     if(!in_tile(f))
       continue;
@@ -190,6 +171,41 @@ void write_atlas_PNG(std::ostream& out, const TriangleMesh& mesh, FacePatchMap p
     throw std::runtime_error("stb failed to encode the atlas PNG");
   if(!out)
     throw std::runtime_error("error while writing the atlas PNG");
+}
+
+/// \ingroup PkgDiskSegmentationIO
+///
+/// Draws the atlas layout as an RGB PNG picture of `resolution` x
+/// `height` pixels (`resolution` x `resolution` when `height` is 0),
+/// \f$ v \f$ up (row 0 is \f$ v = 1 \f$): white
+/// background, the faces of each chart filled with `chart_color()` of its
+/// id, chart borders (edges between two charts and mesh borders) as dark
+/// 1-pixel lines, and faces whose UV orientation is negative in pure red,
+/// drawn last (at least the pixel of their centroid) so that no fold goes
+/// unseen. A pixel is filled when its center is in a triangle.
+///
+/// Needs stb (Debian's `libstb-dev`, pkg-config `stb`, which also provides
+/// the compiled implementation): include this header only where it is
+/// available.
+///
+/// @tparam TriangleMesh, FacePatchMap, UVMap as in `write_atlas_OBJ()`
+///
+/// @throws Input_error if `resolution` or `height` is above `max_atlas_png_resolution`, `resolution` is 0,
+///         or `tile` is below 1001
+/// @throws std::runtime_error if stb or the stream fails
+///
+/// With `tile` (a UDIM tile number, `1001 + i + 10 j` for the square
+/// \f$ [i, i+1] \times [j, j+1] \f$, `0 <= i < 10`), only the faces whose
+/// UV centroid lies in that square are drawn, moved to \f$ [0,1]^2 \f$: one
+/// picture per page of an atlas whose pages are laid out as UDIM tiles.
+///
+/// Complexity: \f$ O(F + R^2) \f$ time and \f$ O(R^2) \f$ memory for `F`
+/// faces and resolution `R`.
+template <typename TriangleMesh, typename FacePatchMap, typename UVMap>
+void write_atlas_PNG(std::ostream& out, const TriangleMesh& mesh, FacePatchMap patch, UVMap uv,
+                     unsigned int resolution, unsigned int height = 0, unsigned int tile = 1001)
+{
+  write_atlas_PNG_of_faces(out, mesh, faces(mesh), patch, uv, resolution, height, tile);
 }
 
 } // namespace IO
