@@ -117,7 +117,7 @@ void check_shape(const py::array& a, const char* name, const char* expected)
 
 // The triangle soup of two arrays, checked as the C++ tool checks a file:
 // shapes and dtypes here, then indices, finiteness and manifoldness by
-// the tool's own soup check (pinched vertices are split, appending copies).
+// the tool's own soup check (pinched vertices are kept and counted).
 struct Soup
 {
   std::vector<Point> points;

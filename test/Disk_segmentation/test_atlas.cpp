@@ -10,6 +10,8 @@
 #include "test_meshes.h"
 
 #include <CGAL/Disk_segmentation.h>
+#include <CGAL/Disk_segmentation/IO/Atlas_options.h>
+#include <CGAL/Disk_segmentation/IO/read_triangle_mesh.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
@@ -31,6 +33,7 @@
 #endif
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <cmath>
@@ -1572,6 +1575,59 @@ TEST(Atlas, TheDiskTestJoinsTheCopiesOfASplitVertex)
   EXPECT_TRUE(joined.count(rest).is_disk());
 }
 
+TEST(Atlas, TheDiskTestJoinsTwoCopiesWhateverOrderItMeetsThemIn)
+{
+  // A sphere without the faces around its north pole is a disk. Made two
+  // copies of one input vertex, any two of its vertices not on one edge
+  // pinch it (chi 0 on the input). The disk test once missed a copy met
+  // right after the first meeting of its input vertex (it took the copy's
+  // number, the latest one, for a new one) and passed such regions.
+  const Mesh tm = make(TS::uv_sphere(6, 8));
+  DS::internal::Indexed_triangle_mesh m;
+  std::vector<Mesh::Face_index> face_handles;
+  DS::internal::build_indexed_triangle_mesh(tm, DS::parameters::default_values(), m, face_handles);
+  ASSERT_TRUE(m.split_from.empty());
+  std::vector<std::size_t> valence(m.number_of_vertices(), 0);
+  for(const auto& corners : m.corners)
+    for(DS::internal::Index v : corners)
+      ++valence[v];
+  const DS::internal::Index pole = DS::internal::Index(
+    std::find(valence.begin(), valence.end(), 8u) - valence.begin());
+  ASSERT_LT(pole, m.number_of_vertices());
+  std::vector<DS::internal::Index> rest;
+  std::set<std::pair<DS::internal::Index, DS::internal::Index> > edges;
+  for(DS::internal::Index f = 0; f < m.number_of_faces(); ++f)
+  {
+    const auto& k = m.corners[f];
+    if(std::find(k.begin(), k.end(), pole) != k.end())
+      continue;
+    rest.push_back(f);
+    for(int i = 0; i < 3; ++i)
+      edges.insert(std::minmax(k[i], k[(i + 1) % 3]));
+  }
+  DS::internal::Region_topology alone(m);
+  ASSERT_TRUE(alone.count(rest).is_disk());
+
+  std::size_t pairs = 0;
+  for(DS::internal::Index a = 0; a < m.number_of_vertices(); ++a)
+    for(DS::internal::Index b = 0; b < m.number_of_vertices(); ++b)
+    {
+      if(a == b || a == pole || b == pole || edges.count(std::minmax(a, b)) > 0)
+        continue;
+      m.split_from.resize(m.number_of_vertices());
+      for(DS::internal::Index v = 0; v < m.split_from.size(); ++v)
+        m.split_from[v] = v;
+      m.split_from[b] = a;
+      DS::internal::Region_topology joined(m);
+      const DS::internal::Region_counts c = joined.count(rest);
+      ASSERT_TRUE(c.joins_split_vertex) << "copies " << a << " and " << b;
+      ASSERT_EQ(c.euler_characteristic(), 0) << "copies " << a << " and " << b;
+      ASSERT_FALSE(c.is_disk()) << "copies " << a << " and " << b;
+      ++pairs;
+    }
+  EXPECT_GT(pairs, 1000u);
+}
+
 TEST(Atlas, TheSplitScratchHoldsMemoryForTheRegionNotTheMesh)
 {
   // Every thread that splits charts has its own sampler, disk test, labels
@@ -1746,6 +1802,82 @@ TEST(Atlas, PinchedVerticesAreCutNotRejected)
       EXPECT_EQ(copy.number_of_vertices(), tm.number_of_vertices());
     }
   }
+}
+
+// A UV sphere without, around each of three vertices of its second ring,
+// two opposite faces of the six: each vertex keeps two fans of two faces,
+// where the border of a hole passes twice. `pair` names the opposite faces:
+// 0, 1 or 2 for (first, fourth), (second, fifth), (third, sixth) in turn
+// around the vertex.
+TS::Soup sphere_with_pinched_holes(int n_lat, int n_lon, int pair)
+{
+  TS::Soup s = TS::uv_sphere(n_lat, n_lon);
+  auto ring = [n_lon](int k, int j) { return std::size_t(1 + (k - 1) * n_lon + (j + n_lon) % n_lon); };
+  std::set<std::array<std::size_t, 3> > gone;
+  for(int j : { 0, 3, 6 })
+  {
+    const int k = 2;
+    const std::array<std::size_t, 3> around[6] = {
+      { { ring(k - 1, j - 1), ring(k, j - 1), ring(k, j) } },     { { ring(k - 1, j - 1), ring(k, j), ring(k - 1, j) } },
+      { { ring(k - 1, j), ring(k, j), ring(k, j + 1) } },         { { ring(k, j), ring(k + 1, j + 1), ring(k, j + 1) } },
+      { { ring(k, j), ring(k + 1, j), ring(k + 1, j + 1) } },     { { ring(k, j - 1), ring(k + 1, j), ring(k, j) } } };
+    gone.insert(around[pair]);
+    gone.insert(around[pair + 3]);
+  }
+  const std::size_t before = s.triangles.size();
+  s.triangles.erase(std::remove_if(s.triangles.begin(), s.triangles.end(),
+                                   [&gone](const std::array<std::size_t, 3>& t) { return gone.count(t) > 0; }),
+                    s.triangles.end());
+  if(s.triangles.size() + 6 != before)
+    ADD_FAILURE() << "not every face to remove was found";
+  return s;
+}
+
+TEST(Atlas, PatchesOfAFileAreDisksOfItsMeshAtPinchedVertices)
+{
+  // As disk_uv does: the file read by read_triangle_mesh(), then uv_atlas()
+  // with the tool's defaults. The reader once gave each extra fan its own
+  // vertex, and uv_atlas(), which could not know they were one, made
+  // patches holding both fans: no disks on the file's mesh (chi 0).
+  for(const std::array<int, 2>& size : { std::array<int, 2>{ { 8, 12 } }, std::array<int, 2>{ { 12, 16 } } })
+    for(int pair : { 0, 1, 2 })
+    {
+      SCOPED_TRACE("sphere " + std::to_string(size[0]) + " x " + std::to_string(size[1]) + ", pair " +
+                   std::to_string(pair));
+      const TS::Soup soup = sphere_with_pinched_holes(size[0], size[1], pair);
+      const std::string path = std::string(::testing::TempDir()) + "/disk_uv_test_pinched_holes.off";
+      {
+        std::ofstream out(path);
+        out.precision(17);
+        out << "OFF\n" << soup.points.size() << " " << soup.triangles.size() << " 0\n";
+        for(const auto& p : soup.points)
+          out << p[0] << " " << p[1] << " " << p[2] << "\n";
+        for(const auto& t : soup.triangles)
+          out << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
+      }
+      Mesh read;
+      const DS::IO::Read_changes changes = DS::IO::read_triangle_mesh(path, read);
+      std::remove(path.c_str());
+      EXPECT_EQ(changes.pinched_vertices_split, 3u);
+      EXPECT_EQ(read.number_of_vertices(), soup.points.size());
+      Patch_map patch = read.add_property_map<Mesh::Face_index, std::size_t>("f:patch", 0).first;
+      UV_map uv = read.add_property_map<Mesh::Halfedge_index, K::Point_2>("h:uv").first;
+      DS::uv_atlas(read, uv, DS::IO::atlas_parameters(DS::IO::Atlas_options()).face_patch_map(patch));
+
+      // The file's mesh, its pinched vertices kept; face i of both meshes is
+      // the file's face i.
+      Mesh file;
+      for(const auto& p : soup.points)
+        file.add_vertex(K::Point_3(p[0], p[1], p[2]));
+      for(const auto& t : soup.triangles)
+        ASSERT_NE(file.add_face(Mesh::Vertex_index(t[0]), Mesh::Vertex_index(t[1]), Mesh::Vertex_index(t[2])),
+                  Mesh::null_face());
+      Patch_map file_patch = file.add_property_map<Mesh::Face_index, std::size_t>("f:patch", 0).first;
+      for(Mesh::Face_index f : file.faces())
+        file_patch[f] = patch[f];
+      const TS::Partition_report r = TS::check_disk_partition(file, file_patch);
+      EXPECT_TRUE(r.ok) << r.problem;
+    }
 }
 
 TEST(Parameters, ChainsGiveTheSameAtlasInEitherOrder)

@@ -313,12 +313,13 @@ expect_repaired 3 "$work/nonmanifold_edge.off" --repair
 grep -q '"vertices_added": 0' "$work/r.json" && fail "cutting the non-manifold edge added no vertex" || pass
 expect_repaired 2 "$work/pinched.off" --repair
 expect_repaired 2 "$work/flipped.off" --repair
-# A pinched vertex is split without being asked: same faces, in order, one
-# more vertex at the same place.
+# A pinched vertex is no error, and kept: same faces, in order, and the
+# file's vertices (the charts cut the mesh there, each fan with its own UVs).
 expect_repaired 2 "$work/pinched.off"
 grep -q '"pinched_vertices_split": 1' "$work/r.json" && pass || fail "report does not count the split vertex"
-[ "$(grep -c '^v ' "$work/r.obj")" -eq 6 ] && pass || fail "the split vertex was not copied once"
-grep -q "1 pinched vertices split" "$work/out.txt" && pass || fail "the summary does not say the vertex was split"
+[ "$(grep -c '^v ' "$work/r.obj")" -eq 5 ] && pass || fail "the pinched vertex was copied in the OBJ"
+grep -q "1 pinched vertices split by the charts" "$work/out.txt" && pass || fail "the summary does not say the vertex was split"
+grep -q "input changed" "$work/out.txt" && fail "the summary says a pinched vertex changed the input" || pass
 expect_repaired 2 "$work/quad.off" --triangulate
 # An L-shaped hexagon: a fan from its reflex corner's neighbour would leave
 # the polygon; the planar triangulation stays inside it.

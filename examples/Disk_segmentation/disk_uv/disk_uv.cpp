@@ -12,8 +12,8 @@
 //           [--threads 0] [--repair] [--triangulate] [--allow-special-input]
 //           [--no-fallback] [--quiet]
 //
-// Inputs are used as they are, except that a pinched vertex (faces meeting
-// in several fans) is split into one vertex per fan: a non-manifold edge,
+// Inputs are used as they are (a pinched vertex, whose faces meet in
+// several fans, is kept: the charts cut the mesh there): a non-manifold edge,
 // inconsistently oriented or duplicated faces are rejected with a message
 // naming the first bad element, unless --repair (CGAL's polygon soup repair
 // and orientation) and --triangulate (polygons to triangles) are given;
@@ -722,12 +722,15 @@ void print_summary(const Command_line& line, const DS::Atlas_report& report, con
   const char* input = line.inputs.front().c_str();
   if(line.quiet)
     return;
-  if(changes.polygons_triangulated || changes.faces_removed || changes.vertices_added || changes.vertices_removed ||
-     changes.pinched_vertices_split)
+  if(changes.polygons_triangulated || changes.faces_removed || changes.vertices_added || changes.vertices_removed)
     std::printf("%s: input changed: %zu polygons triangulated (%zu as fans), %zu faces removed, "
-                "%zu vertices removed, %zu vertices added, %zu pinched vertices split\n",
+                "%zu vertices removed, %zu vertices added\n",
                 input, changes.polygons_triangulated, changes.fan_triangulations, changes.faces_removed,
-                changes.vertices_removed, changes.vertices_added, changes.pinched_vertices_split);
+                changes.vertices_removed, changes.vertices_added);
+  // The mesh keeps them; only the charts split them.
+  if(changes.pinched_vertices_split)
+    std::printf("%s: %zu pinched vertices split by the charts (the outputs keep the file's vertices)\n", input,
+                changes.pinched_vertices_split);
   std::printf("%s: %zu faces -> %zu charts (voronoi %zu, refined %zu), %s, %zu fallbacks, %zu invalid, "
               "packing %.1f%%; time read %.3f s, segment %.3f s, parameterize %.3f s (each face solved %.2f "
               "times), pack %.3f s\n",

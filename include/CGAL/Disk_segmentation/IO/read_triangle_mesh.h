@@ -34,7 +34,7 @@
 #include <string>
 #include <string_view>
 #include <tuple>
-#include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -74,7 +74,9 @@ struct Read_changes
   std::size_t faces_added = 0;         // by the triangulation
   std::size_t vertices_removed = 0;    // merged or isolated, net of the ones the repair duplicated
   std::size_t vertices_added = 0;      // duplicated by the repair to make the mesh manifold
-  std::size_t pinched_vertices_split = 0;  // vertex copies given to the extra fans of pinched vertices
+  // Fans beyond the first at pinched vertices: the mesh keeps such a vertex,
+  // and the package's functions cut it into one vertex per fan themselves.
+  std::size_t pinched_vertices_split = 0;
   // With `triangulate`: the polygon (its position among the faces read,
   // after the repair) of each face of the mesh. Empty otherwise.
   std::vector<std::size_t> polygon_of_face;
@@ -130,15 +132,17 @@ inline std::string duplicated_face_problem(const std::vector<std::vector<std::si
 }
 
 // Names the first reason why the soup is not a manifold, consistently
-// oriented triangle mesh; empty if it is one. With `split_pinched_vertices`,
+// oriented triangle mesh; empty if it is one. With `pinched_vertex_fans`,
 // a vertex whose faces form several fans (a pinched vertex) is no problem:
-// each fan but the first gets its own copy of the vertex (same position),
-// appended to `points`, and the number of copies is added to the count.
-// Faces keep their order and their corners' positions.
+// it is kept, and its fans but the first are added to the count. A copy of
+// the vertex per fan made here would hide from the package's functions that
+// the fans are one vertex of the file, and a chart could then hold two of
+// them (no disk of the file's mesh); they cut the mesh there themselves and
+// remember which copies are one vertex.
 template <typename Point>
-std::string triangle_soup_problem(std::vector<Point>& points,
-                                  std::vector<std::vector<std::size_t> >& polygons,
-                                  std::size_t* split_pinched_vertices = nullptr)
+std::string triangle_soup_problem(const std::vector<Point>& points,
+                                  const std::vector<std::vector<std::size_t> >& polygons,
+                                  std::size_t* pinched_vertex_fans = nullptr)
 {
   if(polygons.empty())
     return "the mesh has no face";
@@ -229,26 +233,20 @@ std::string triangle_soup_problem(std::vector<Point>& points,
     i = j;
   }
   std::vector<std::uint32_t> first_fan(points.size(), std::numeric_limits<std::uint32_t>::max());
-  std::unordered_map<std::uint32_t, std::size_t> copy_of_fan;
+  std::unordered_set<std::uint32_t> other_fans;  // by root
   for(std::uint32_t c = 0; c < fan.size(); ++c)
   {
-    std::size_t& v = polygons[c / 3][c % 3];
+    const std::size_t v = polygons[c / 3][c % 3];
     const std::uint32_t root = find(c);
     if(first_fan[v] == std::numeric_limits<std::uint32_t>::max())
       first_fan[v] = root;
     else if(first_fan[v] != root)
     {
-      if(split_pinched_vertices == nullptr)
+      if(pinched_vertex_fans == nullptr)
         return "the mesh is not manifold: the faces around vertex #" + std::to_string(v) +
                " form more than one fan (a pinched vertex)";
-      const auto inserted = copy_of_fan.emplace(root, points.size());
-      if(inserted.second)
-      {
-        const Point copy = points[v];
-        points.push_back(copy);
-        ++*split_pinched_vertices;
-      }
-      v = inserted.first->second;
+      if(other_fans.insert(root).second)
+        ++*pinched_vertex_fans;
     }
   }
   return std::string();
@@ -326,8 +324,8 @@ Read_changes prepare_triangle_soup(std::vector<Point>& points, std::vector<std::
     polygons.swap(triangles);
   }
 
-  // Pinched vertices are split without being asked: it moves no point and
-  // changes no face, and the atlas cuts the mesh there anyway.
+  // Pinched vertices are no error, and the mesh keeps them: the atlas cuts
+  // the mesh there anyway.
   const std::string problem = triangle_soup_problem(points, polygons, &changes.pinched_vertices_split);
   if(!problem.empty())
   {
@@ -349,9 +347,13 @@ Read_changes prepare_triangle_soup(std::vector<Point>& points, std::vector<std::
 /// Reads the triangle mesh of the file `path` (OFF, OBJ, PLY, STL or TS,
 /// told by the extension) into `mesh`, keeping the file's face and vertex
 /// order unless `options` change the mesh. A vertex where faces meet in
-/// several fans is split into one vertex per fan; a non-manifold edge,
-/// inconsistently oriented or duplicated faces and polygons are refused
-/// unless `options` repair or triangulate them.
+/// several fans (a pinched vertex) is kept as one vertex, as `Surface_mesh`
+/// can hold it (CGAL's `is_valid_polygon_mesh()` rejects it, and
+/// `Polygon_mesh_processing::duplicate_non_manifold_vertices()` splits it):
+/// the package's functions cut the mesh there themselves, and none of their
+/// patches holds two of its fans. A non-manifold edge, inconsistently
+/// oriented or duplicated faces and polygons are refused unless `options`
+/// repair or triangulate them.
 ///
 /// \tparam Mesh a model of `MutableFaceGraph` whose points are 3D points
 /// \returns what reading changed

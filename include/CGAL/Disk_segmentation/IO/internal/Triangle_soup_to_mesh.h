@@ -1,9 +1,9 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// A checked triangle soup (manifold, consistently oriented, no pinched
-// vertex: what the disk_uv tool's readers check) turned into a halfedge mesh
-// in O(F log F), whatever the valences. CGAL's
+// A checked triangle soup (manifold edges, consistently oriented: what the
+// disk_uv tool's readers check) turned into a halfedge mesh in O(F log F),
+// whatever the valences. CGAL's
 // polygon_soup_to_polygon_mesh() adds the faces one by one through
 // Euler::add_face(), which walks around each corner's vertex: a vertex of
 // valence 200k cost 48 s there.
@@ -14,6 +14,12 @@
 // the one that ends at its first corner, and each border vertex's halfedge
 // its incoming border halfedge. Only an inner vertex's halfedge may be
 // another one of its incoming halfedges.
+//
+// A pinched vertex (its faces in several fans), which CGAL's function
+// refuses, is kept: the border halfedge into it is followed by the one
+// that leaves it along the same fan, so that circulating around it stays
+// in one fan (the package's indexed mesh finds the vertex pinched from
+// there and cuts it, see check_and_split_vertices()).
 
 #ifndef CGAL_DISK_SEGMENTATION_IO_INTERNAL_TRIANGLE_SOUP_TO_MESH_H
 #define CGAL_DISK_SEGMENTATION_IO_INTERNAL_TRIANGLE_SOUP_TO_MESH_H
@@ -37,9 +43,9 @@ namespace IO {
 namespace internal {
 
 // Builds `mesh` (cleared first) from `points` and `triangles`, which must
-// form a manifold, consistently oriented triangle mesh without pinched
-// vertex (throws std::logic_error where it sees otherwise). `Mesh` is a
-// model of MutableFaceGraph.
+// form a consistently oriented triangle mesh with manifold edges, pinched
+// vertices allowed (throws std::logic_error where it sees otherwise). `Mesh`
+// is a model of MutableFaceGraph.
 template <typename Point, typename Mesh>
 void checked_triangle_soup_to_mesh(const std::vector<Point>& points,
                                    const std::vector<std::vector<std::size_t> >& triangles, Mesh& mesh)
@@ -96,6 +102,7 @@ void checked_triangle_soup_to_mesh(const std::vector<Point>& points,
   std::vector<halfedge_descriptor> corner_halfedge(corners);
   std::vector<halfedge_descriptor> incoming_border(points.size(), Traits::null_halfedge());
   std::vector<halfedge_descriptor> outgoing_border(points.size(), Traits::null_halfedge());
+  std::vector<bool> several_borders(points.size(), false);  // a pinched vertex with open fans
   for(std::uint32_t c = 0; c < corners; ++c)
   {
     if(partner[c] != none && partner[c] < c)
@@ -114,10 +121,14 @@ void checked_triangle_soup_to_mesh(const std::vector<Point>& points,
     else
     {
       set_face(o, Traits::null_face(), mesh);
-      if(incoming_border[from(c)] != Traits::null_halfedge() || outgoing_border[to(c)] != Traits::null_halfedge())
-        throw std::logic_error("checked_triangle_soup_to_mesh: a pinched vertex");
-      incoming_border[from(c)] = o;
-      outgoing_border[to(c)] = o;
+      if(incoming_border[from(c)] == Traits::null_halfedge())
+        incoming_border[from(c)] = o;
+      else
+        several_borders[from(c)] = true;
+      if(outgoing_border[to(c)] == Traits::null_halfedge())
+        outgoing_border[to(c)] = o;
+      else
+        several_borders[to(c)] = true;
     }
   }
 
@@ -137,8 +148,25 @@ void checked_triangle_soup_to_mesh(const std::vector<Point>& points,
   for(std::size_t v = 0; v < points.size(); ++v)
     if(incoming_border[v] != Traits::null_halfedge())
     {
-      set_next(incoming_border[v], outgoing_border[v], mesh);
+      if(!several_borders[v])
+        set_next(incoming_border[v], outgoing_border[v], mesh);
       set_halfedge(vertices[v], incoming_border[v], mesh);
+    }
+  // At such a vertex v, the border corner c leaving v (its border halfedge
+  // comes into v) starts an open fan: across the fan's inner edges it
+  // reaches the border corner coming into v, whose border halfedge leaves v.
+  for(std::uint32_t c = 0; c < corners; ++c)
+    if(partner[c] == none && several_borders[from(c)])
+    {
+      std::uint32_t into_v = 3 * (c / 3) + (c % 3 + 2) % 3;
+      // Ends: each step crosses an inner edge at v to the next face of an
+      // open fan, in one turning direction (the faces are oriented alike).
+      while(partner[into_v] != none)
+      {
+        const std::uint32_t out_of_v = partner[into_v];
+        into_v = 3 * (out_of_v / 3) + (out_of_v % 3 + 2) % 3;
+      }
+      set_next(opposite(corner_halfedge[c], mesh), opposite(corner_halfedge[into_v], mesh), mesh);
     }
 }
 

@@ -97,7 +97,11 @@ public:
           if(seen)
             continue;
           seen = 1;
-          if(input_vertices_.insert(m_.input_vertex(v)) + 1 != input_vertices_.size())
+          // A copy met before leaves the count as it was. (Its number is no
+          // test: the latest input vertex met has number size() - 1 too.)
+          const std::size_t known = input_vertices_.size();
+          input_vertices_.insert(m_.input_vertex(v));
+          if(input_vertices_.size() == known)
           {
             c.joins_split_vertex = true;
             --c.vertices;
