@@ -262,7 +262,8 @@ def atlas(vertices, faces=None, method=_disk_uv.default_parameterization_method,
                                     % type(vertices).__name__)
         results, packing = _disk_uv.atlas_of_meshes(list(vertices), options)
         # The pages' coverage is the common packing's: one list shared by all reports, not a copy in each.
-        page_efficiency = json.loads(packing)["page_efficiency"]
+        common = json.loads(packing)
+        page_efficiency = common["page_efficiency"]
         atlases = []
         for (v, f), r in zip(vertices, results):
             report = json.loads(r["report"])
@@ -271,7 +272,7 @@ def atlas(vertices, faces=None, method=_disk_uv.default_parameterization_method,
         if atlases:
             _warn_if_sparse(atlases[0].report["packing"]["efficiency"], atlases[0].report["total_charts"],
                             resolution, padding, texels_per_unit)
-            _warn_of_charts_below_a_texel(atlases[0].report["packing"], resolution, texels_per_unit)
+            _warn_of_charts_below_a_texel(common, resolution, texels_per_unit)
             if max_charts is not None and atlases[0].report["total_charts"] > max_charts:
                 warnings.warn("%d charts in all: max_charts=%d is a budget for each of the %d meshes, not for the "
                               "atlas" % (atlases[0].report["total_charts"], max_charts, len(atlases)),
