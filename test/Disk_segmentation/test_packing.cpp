@@ -955,7 +955,7 @@ TEST(Packing, FixedTexelDensityThatCannotBePackedThrowsAndWritesNothing)
   EXPECT_NE(m.find("max_number_of_pages"), std::string::npos) << m;
   // So low that rounding would collapse the charts' triangles (in doubles,
   // next to the padding's offsets): refused, not packed into a broken atlas.
-  for(double tiny : { 1e-15, 1e-300 })
+  for(double tiny : { 1e-18, 1e-300 })
   {
     m = message_of(DS::parameters::texels_per_unit(tiny * fit_density));
     EXPECT_NE(m.find("degenerate or flipped in the packed UVs"), std::string::npos) << m;
