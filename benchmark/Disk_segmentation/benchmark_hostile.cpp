@@ -10,6 +10,10 @@
 //                             valence N (N faces)
 //   BM_atlas/cone:N           a closed cone: two vertices of valence N (2N faces)
 //   BM_atlas/tetrahedra:N     N tetrahedra beside a torus of 100k faces
+//   BM_pack_pages/pages:N     pack_patches() of N separate triangles at a
+//                             density that puts one on each page of 64
+//                             texels: N pages (beyond the 999 UDIM tiles the
+//                             front ends allow; counter us_per_page)
 //   BM_build/ours:N, BM_build/cgal:N
 //                             a fan of valence N turned into a Surface_mesh:
 //                             the readers' builder and CGAL's
@@ -22,6 +26,7 @@
 // read them as ratios between lines of one run (repetitions: min).
 
 #include <CGAL/Disk_segmentation/IO/internal/Triangle_soup_to_mesh.h>
+#include <CGAL/Disk_segmentation/pack_patches.h>
 #include <CGAL/Disk_segmentation/uv_atlas.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -159,6 +164,43 @@ void BM_atlas(benchmark::State& state, const std::string& key, const std::functi
   state.counters["pack_ms"] = benchmark::Counter(1e3 * pack_seconds, benchmark::Counter::kAvgIterations);
 }
 
+// N equilateral triangles of side 1 apart from each other, each its own
+// chart with its planar coordinates as UVs; 56 texels per unit on pages of
+// 64 texels with a texel of padding: one chart a page.
+void BM_pack_pages(benchmark::State& state, std::size_t n)
+{
+  Soup s;
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    const double x = 3. * double(k % 100), y = 3. * double(k / 100);
+    const std::size_t a = s.add(x, y, 0.), b = s.add(x + 1., y, 0.), c = s.add(x + 0.5, y + 0.8660254037844386, 0.);
+    s.triangles.push_back({ a, b, c });
+  }
+  Mesh mesh;
+  DS::IO::internal::checked_triangle_soup_to_mesh(s.points, s.triangles, mesh);
+  std::vector<std::size_t> labels(mesh.number_of_faces());
+  for(Mesh::Face_index f : mesh.faces())
+    labels[std::size_t(f)] = std::size_t(f);
+  std::vector<K::Point_2> uvs(mesh.number_of_halfedges());
+  auto patch = boost::make_iterator_property_map(labels.begin(), get(boost::face_index, mesh));
+  auto uv = boost::make_iterator_property_map(uvs.begin(), get(boost::halfedge_index, mesh));
+  DS::Packing_report report;
+  for(auto _ : state)
+  {
+    state.PauseTiming();
+    for(Mesh::Halfedge_index h : mesh.halfedges())
+      if(!mesh.is_border(h))
+        put(uv, h, K::Point_2(mesh.point(mesh.target(h)).x(), mesh.point(mesh.target(h)).y()));
+    state.ResumeTiming();
+    report = DS::pack_patches(mesh, patch, uv,
+                              DS::parameters::texture_resolution(64u).padding_in_texels(1.).texels_per_unit(56.)
+                                .max_number_of_pages(n).number_of_threads(1u));
+  }
+  state.counters["pages"] = double(report.number_of_pages);
+  state.counters["us_per_page"] =
+    benchmark::Counter(double(n) * 1e-6, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
 void BM_build(benchmark::State& state, std::size_t valence, bool ours)
 {
   const Soup s = cone(valence, false);
@@ -199,6 +241,11 @@ int main(int argc, char** argv)
     register_atlas("cone:" + std::to_string(n), [=] { return cone(n, true); });
   for(std::size_t n : { 1000, 5000, 10000, 20000, 40000 })
     register_atlas("tetrahedra:" + std::to_string(n), [=] { return tetrahedra_beside_a_torus(n); });
+  for(std::size_t n : { 1000, 2000, 4000, 6000 })
+    benchmark::RegisterBenchmark(("BM_pack_pages/pages:" + std::to_string(n)).c_str(), BM_pack_pages, n)
+      ->Unit(benchmark::kMillisecond)
+      ->UseRealTime()
+      ->ComputeStatistics("min", minimum);
   for(std::size_t n : { 12500, 25000, 50000, 100000, 200000 })
     for(bool ours : { true, false })
     {
