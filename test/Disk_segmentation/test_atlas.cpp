@@ -1531,24 +1531,31 @@ TEST(Atlas, RegionValuesKeepAValuePerKeyAcrossClears)
   }
 }
 
+// A UV sphere's indexed mesh (no split vertex) and the valence of its vertices.
+static void indexed_sphere(DS::internal::Indexed_triangle_mesh& m, std::vector<std::size_t>& valence)
+{
+  const Mesh tm = make(TS::uv_sphere(6, 8));
+  std::vector<Mesh::Face_index> face_handles;
+  DS::internal::build_indexed_triangle_mesh(tm, DS::parameters::default_values(), m, face_handles);
+  valence.assign(m.number_of_vertices(), 0);
+  for(const auto& corners : m.corners)
+    for(DS::internal::Index v : corners)
+      ++valence[v];
+}
+
 TEST(Atlas, TheDiskTestJoinsTheCopiesOfASplitVertex)
 {
   // A closed sphere whose two poles are copies of one input vertex (as the
   // package splits a vertex where two closed fans meet): on the input it is
   // a sphere pinched at one point, chi = 1, edge-connected and no disk.
-  const Mesh tm = make(TS::uv_sphere(6, 8));
   DS::internal::Indexed_triangle_mesh m;
-  std::vector<Mesh::Face_index> face_handles;
-  DS::internal::build_indexed_triangle_mesh(tm, DS::parameters::default_values(), m, face_handles);
+  std::vector<std::size_t> valence;
+  indexed_sphere(m, valence);
   ASSERT_TRUE(m.split_from.empty());
   const std::vector<DS::internal::Index> all = every_face(m);
   DS::internal::Region_topology topology(m);
   ASSERT_EQ(topology.count(all).euler_characteristic(), 2);
   // The two vertices of highest valence are the poles.
-  std::vector<std::size_t> valence(m.number_of_vertices(), 0);
-  for(const auto& corners : m.corners)
-    for(DS::internal::Index v : corners)
-      ++valence[v];
   std::vector<DS::internal::Index> by_valence(m.number_of_vertices());
   for(DS::internal::Index v = 0; v < by_valence.size(); ++v)
     by_valence[v] = v;
@@ -1582,15 +1589,10 @@ TEST(Atlas, TheDiskTestJoinsTwoCopiesWhateverOrderItMeetsThemIn)
   // pinch it (chi 0 on the input). The disk test once missed a copy met
   // right after the first meeting of its input vertex (it took the copy's
   // number, the latest one, for a new one) and passed such regions.
-  const Mesh tm = make(TS::uv_sphere(6, 8));
   DS::internal::Indexed_triangle_mesh m;
-  std::vector<Mesh::Face_index> face_handles;
-  DS::internal::build_indexed_triangle_mesh(tm, DS::parameters::default_values(), m, face_handles);
+  std::vector<std::size_t> valence;
+  indexed_sphere(m, valence);
   ASSERT_TRUE(m.split_from.empty());
-  std::vector<std::size_t> valence(m.number_of_vertices(), 0);
-  for(const auto& corners : m.corners)
-    for(DS::internal::Index v : corners)
-      ++valence[v];
   const DS::internal::Index pole = DS::internal::Index(
     std::find(valence.begin(), valence.end(), 8u) - valence.begin());
   ASSERT_LT(pole, m.number_of_vertices());

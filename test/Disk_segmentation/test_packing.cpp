@@ -745,13 +745,20 @@ TEST(Packing, BadParametersThrow)
   EXPECT_TRUE(unchanged());
 }
 
-TEST(Packing, FixedTexelDensitySpreadsTheChartsOverPages)
+// Cuts of a grid into 144 unit squares and larger blocks.
+static std::vector<int> mixed_grid_cuts()
 {
   std::vector<int> cuts;
   for(int x = 0; x <= 12; ++x) cuts.push_back(x);
   cuts.push_back(17);
   cuts.push_back(25);
   cuts.push_back(36);
+  return cuts;
+}
+
+TEST(Packing, FixedTexelDensitySpreadsTheChartsOverPages)
+{
+  const std::vector<int> cuts = mixed_grid_cuts();
   Case fit = grid_case(cuts, cuts);
   const DS::Packing_report one_page = pack_and_check(fit, DS::Packing_method::TIGHT, 512, 2.);
   EXPECT_EQ(one_page.number_of_pages, 1u);
@@ -828,11 +835,7 @@ std::vector<std::size_t> pages_trying_every_chart(const Case& c, double texels_p
 TEST(Packing, PagesSkipOnlyTheChartsThatCannotFit)
 {
   // 144 equal squares (one class of footprints) and larger blocks.
-  std::vector<int> cuts;
-  for(int x = 0; x <= 12; ++x) cuts.push_back(x);
-  cuts.push_back(17);
-  cuts.push_back(25);
-  cuts.push_back(36);
+  const std::vector<int> cuts = mixed_grid_cuts();
   Case fit = grid_case(cuts, cuts);
   const DS::Packing_report one_page = pack_and_check(fit, DS::Packing_method::TIGHT, 512, 2.);
   for(double times : { 1.5, 2., 3. })
