@@ -369,9 +369,10 @@ done
 # than the 16 temporaries an earlier version could remove): the run stops
 # at its next block written, every temporary file is removed and the same
 # line is printed; a second signal ends it at once, also removing them all.
-# The OBJ goes to a FIFO held open but not read, so the tool waits in that
-# write (write-through outputs come after every temporary file) until the
-# test has sent its signals.
+# The OBJ goes to a FIFO that nobody reads yet, so the tool waits in that
+# write (write-through outputs come after every temporary file): the test
+# sends its signals once the kernel says the tool waits in a pipe write,
+# then reads the FIFO to its end (the end comes when the tool is gone).
 mkdir -p "$work/w"
 python3 -c "
 n = 2000
@@ -380,32 +381,34 @@ for i in range(n):
     x, y = 3.0 * (i % 50), 3.0 * (i // 50)
     lines += ['%g %g 0' % (x, y), '%g %g 0' % (x + 1, y), '%g %g 0' % (x + .5, y + .866)]
 lines += ['3 %d %d %d' % (3 * i, 3 * i + 1, 3 * i + 2) for i in range(n)]
-open('$work/w/triangles.off', 'w').write('\n'.join(lines) + '\n')"
-temporaries() { ls -A "$work/w" | grep -c 'disk_uv-'; }
+open('$work/w/triangles.off', 'w').write('\\n'.join(lines) + '\\n')"
 for signals in "INT" "INT TERM"; do
   rm -f "$work/w/fifo.obj"
   mkfifo "$work/w/fifo.obj"
+  # Held open for reading and writing: the tool's open finds a reader.
   exec 3<> "$work/w/fifo.obj"
   "$tool" "$work/w/triangles.off" --resolution 64 --padding 1 --texels-per-unit 5 -o "$work/w/fifo.obj" \
     --atlas-png "$work/w/page.png" --glb "$work/w/atlas.glb" --report "$work/w/report.json" -q \
-    > /dev/null 2> "$work/err.txt" &
+    > /dev/null 2> "$work/err.txt" 3>&- &
   pid=$!
-  # Waiting for the temporaries to stop growing: the tool then waits on the FIFO.
-  last=-1
-  for i in $(seq 1 600); do
-    now=$(temporaries)
-    [ "$now" -gt 16 ] && [ "$now" -eq "$last" ] && break
-    last=$now
-    sleep 0.5
+  waiting=0
+  for i in $(seq 1 1200); do
+    if grep -q pipe_write "/proc/$pid/wchan" 2> /dev/null; then waiting=1; break; fi
+    sleep 0.1
   done
-  [ "$now" -gt 16 ] && pass || fail "signal while writing: only $now temporaries before the signal"
+  temporaries=$(ls -A "$work/w" | grep -c 'disk_uv-')
+  [ "$waiting" -eq 1 ] && [ "$temporaries" -gt 16 ] && pass \
+    || fail "signal while writing: the tool did not wait in the FIFO with its temporaries ($temporaries)"
   for signal in $signals; do kill -s "$signal" "$pid"; sleep 0.3; done
-  cat <&3 > /dev/null &
+  # A read end of the shell's own (opened at once: fd 3 writes), handed to
+  # the reader; the end of the input comes once the tool is gone.
+  exec 4< "$work/w/fifo.obj"
+  cat <&4 3>&- 4<&- > /dev/null &
   reader=$!
+  exec 3>&- 4<&-
   wait "$pid"
   status=$?
-  kill "$reader" 2> /dev/null
-  exec 3>&-
+  wait "$reader"
   last_signal=${signals##* }
   expected=$((128 + $(kill -l "$last_signal")))
   [ "$status" -eq "$expected" ] && pass || fail "SIG$signals while writing: exit status $status, expected $expected"
