@@ -240,7 +240,7 @@ for line in open('$work/tiny.obj'):
     elif f and f[0] == 'f':
         (a, b), (c, d), (e, g) = [vt[int(x.split('/')[1]) - 1] for x in f[1:4]]
         bad += not (c - a) * (g - b) - (d - b) * (e - a) > 0
-sys.exit(1 if bad or not vt else 0)" && grep -q "warning: 59 of 59 charts are smaller than one texel" "$work/err.txt" \
+sys.exit(1 if bad or not vt else 0)" && grep -q "warning: 59 of 59 charts are smaller than one texel of a --resolution 1024 texture at this --texels-per-unit" "$work/err.txt" \
   && pass || fail "--texels-per-unit 1e-3 OBJ: $(cat "$work/err.txt")"
 # Several inputs, one atlas: each mesh keeps the charts it gets alone.
 "$tool" "$data/elephant.off" --patch-ids "$work/alone_a.txt" > /dev/null 2>&1

@@ -203,7 +203,7 @@ rm -rf pages
 awk 'NR <= 2 || NF != 3 || /^3 / { print; next } { print $1 * 1e-6, $2 * 1e-6, $3 * 1e-6 }' dir/x.off > tiny.off
 run "$data/eight.off" tiny.off --max-charts 2 -o both.obj && pass || fail "two inputs failed: $(cat err.txt)"
 grep -qE "warning: [0-9]+ charts in all: --max-charts \(2\) is a budget for each of the 2 inputs" err.txt \
-  && grep -qE "warning: [0-9]+ of [0-9]+ charts are smaller than one texel" err.txt \
+  && grep -qE "warning: [0-9]+ of [0-9]+ charts are smaller than one texel of a --resolution 1024 texture: " err.txt \
   && pass || fail "per-input budget or sub-texel charts not said: $(cat err.txt)"
 
 # Messages name the options as typed, not the library's parameters.

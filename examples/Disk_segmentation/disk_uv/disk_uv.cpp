@@ -173,7 +173,8 @@ void warn_if_sparse(const DS::Packing_report& packing, std::size_t charts, const
 
 // Charts below a texel hold no texel of their own: said, as the user may
 // not look at every chart (a tiny mesh among large ones, a low density).
-void warn_of_charts_below_a_texel(const DS::Packing_report& packing, const std::string& resolution)
+void warn_of_charts_below_a_texel(const DS::Packing_report& packing, const std::string& resolution,
+                                  double texels_per_unit)
 {
   const std::size_t tiny = packing.number_of_charts_below_a_texel;
   if(tiny == 0)
@@ -182,7 +183,7 @@ void warn_of_charts_below_a_texel(const DS::Packing_report& packing, const std::
                "disk_uv: warning: %zu of %zu charts are smaller than one texel of a --resolution %s texture%s: "
                "they get no texel of their own\n",
                tiny, packing.number_of_charts, resolution.c_str(),
-               packing.texels_per_unit > 0 ? " at this --texels-per-unit" : "");
+               texels_per_unit > 0 ? " at this --texels-per-unit" : "");
 }
 
 // `path` split before the extension of its file name: "out/atlas.png" ->
@@ -679,7 +680,7 @@ int run_several(const Command_line& line, const Settings& settings, const Progre
   print_pages(several.report.packing, out.page_pictures, line.quiet);
   warn_if_sparse(several.report.packing, several.report.first_chart.back(), line.resolution,
                  line.options.padding_in_texels, line.options.texels_per_unit);
-  warn_of_charts_below_a_texel(several.report.packing, line.resolution);
+  warn_of_charts_below_a_texel(several.report.packing, line.resolution, line.options.texels_per_unit);
   const std::size_t budget = line.options.max_number_of_charts;
   if(budget > 0 && several.report.first_chart.back() > budget)
     std::fprintf(stderr,
@@ -773,7 +774,7 @@ int run_single(const Command_line& line, const Settings& settings, const Progres
   const std::size_t max_charts = line.options.max_number_of_charts;
   warn_if_sparse(report.packing, report.number_of_charts, line.resolution, line.options.padding_in_texels,
                  line.options.texels_per_unit);
-  warn_of_charts_below_a_texel(report.packing, line.resolution);
+  warn_of_charts_below_a_texel(report.packing, line.resolution, line.options.texels_per_unit);
   if(!report.parameterization.chart_budget_met)
     std::cerr << "disk_uv: warning: " << report.number_of_charts << " charts, over --max-charts (" << max_charts
               << "): no two adjacent charts unite into one disk with a valid map" << std::endl;
