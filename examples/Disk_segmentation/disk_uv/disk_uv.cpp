@@ -326,16 +326,10 @@ void combine(const Several_atlas& s, Mesh& all, Patch_map& patch, UV_map& uv)
 {
   patch = all.add_property_map<Mesh::Face_index, std::size_t>("f:patch", 0).first;
   uv = all.add_property_map<Mesh::Halfedge_index, Kernel::Point_2>("h:uv", Kernel::Point_2(0, 0)).first;
-  // All the room first: copy_face_graph() reserves to the element for one
-  // more mesh, which moved `all` once per input (quadratic).
-  std::size_t vertices = 0, edges = 0, faces = 0;
+  std::vector<const Mesh*> meshes;
   for(const Mesh& m : s.meshes)
-  {
-    vertices += m.number_of_vertices();
-    edges += m.number_of_edges();
-    faces += m.number_of_faces();
-  }
-  all.reserve(vertices, edges, faces);
+    meshes.push_back(&m);
+  DS::internal::reserve_for_copies(all, meshes);
   for(std::size_t i = 0; i < s.meshes.size(); ++i)
   {
     std::vector<std::pair<Mesh::Halfedge_index, Mesh::Halfedge_index> > halfedges;

@@ -296,6 +296,23 @@ inline float little_endian_float(const char* bytes)
   return value;
 }
 
+// Whether an STL file of `file_size` bytes that starts with `head` (at
+// least its first 84 bytes, or all of it) is ASCII: it starts with 'solid'
+// and a blank (after blank lines), unless its size is exactly the one its
+// binary header declares (some binary writers start the header with 'solid').
+inline bool is_ASCII_STL(std::string_view head, std::uint64_t file_size)
+{
+  std::size_t start = 0;
+  while(start < head.size() && (is_blank(head[start]) || head[start] == '\n'))
+    ++start;
+  const std::string_view word = head.substr(start, 6);
+  const bool starts_with_solid =
+    word.substr(0, 5) == "solid" && (word.size() == 5 || is_blank(word[5]) || word[5] == '\n');
+  const bool binary_size =
+    head.size() >= 84 && file_size == 84 + 50 * std::uint64_t(little_endian_uint32(head.data() + 80));
+  return starts_with_solid && !binary_size;
+}
+
 template <typename Point>
 void read_binary_STL(std::string_view bytes, const std::string& name, std::vector<Point>& points, Polygons& polygons)
 {
@@ -421,12 +438,7 @@ void read_STL_soup(std::string_view bytes, const std::string& name, std::vector<
     ++start;
   if(start == bytes.size())
     throw File_error("'" + name + "' is not a valid .stl file (it is empty)");
-  const std::string_view head = bytes.substr(start, 6);
-  const bool starts_with_solid =
-    head.substr(0, 5) == "solid" && (head.size() == 5 || is_blank(head[5]) || head[5] == '\n');
-  const bool binary_size =
-    bytes.size() >= 84 && bytes.size() == 84 + 50 * std::uint64_t(little_endian_uint32(bytes.data() + 80));
-  if(starts_with_solid && !binary_size)
+  if(is_ASCII_STL(bytes, bytes.size()))
     read_ASCII_STL(bytes, name, points, polygons);
   else
     read_binary_STL(bytes, name, points, polygons);

@@ -11,6 +11,7 @@
 #define CGAL_DISK_SEGMENTATION_IO_INTERNAL_TEXT_LINE_GUARD_H
 
 #include <CGAL/Disk_segmentation/IO/File_error.h>
+#include <CGAL/Disk_segmentation/IO/internal/Mesh_readers.h>
 #include <CGAL/Disk_segmentation/IO/internal/Text_scanner.h>
 
 #include <cstdint>
@@ -72,27 +73,12 @@ private:
                        ": longer than " + size_text(max_line_bytes) + " without a line break (not a text file?))");
   }
 
-  // As read_STL_soup() tells them: ASCII when it starts with "solid" and a
-  // blank, unless its size is the one its binary header declares.
+  // As read_STL_soup() tells them (is_ASCII_STL()), once the header is in.
   void decide_STL(const std::string& bytes)
   {
     if(bytes.size() < 84 && bytes.size() < file_size_)
       return;
-    std::size_t start = 0;
-    while(start < bytes.size() && (is_blank(bytes[start]) || bytes[start] == '\n'))
-      ++start;
-    const std::string_view head = std::string_view(bytes).substr(start, 6);
-    const bool starts_with_solid =
-      head.substr(0, 5) == "solid" && (head.size() == 5 || is_blank(head[5]) || head[5] == '\n');
-    bool binary_size = false;
-    if(bytes.size() >= 84)
-    {
-      std::uint32_t triangles = 0;
-      for(int i = 3; i >= 0; --i)
-        triangles = (triangles << 8) | static_cast<unsigned char>(bytes[80 + i]);
-      binary_size = file_size_ == 84 + 50 * std::uint64_t(triangles);
-    }
-    mode_ = starts_with_solid && !binary_size ? Mode::text : Mode::off;
+    mode_ = is_ASCII_STL(bytes, file_size_) ? Mode::text : Mode::off;
   }
 
   // The header's lines up to end_header: the body is text when the format is ascii.
