@@ -6,6 +6,9 @@ the manual describe:
   - a header under internal/ includes no public header that does work
     (one that itself includes internal/): only value types;
   - only IO/ headers include IO/ headers;
+  - the topic folders of internal/ are floors: a header includes headers
+    of its own floor or of lower ones only (FLOORS, lowest first), so that
+    an upward include fails;
   - every package header a header includes is in the tree, and every
     header of the tree is reachable from the umbrella header
     or from IO/;
@@ -16,6 +19,12 @@ Usage: check_include_layers.py SOURCE_DIR
 import os
 import re
 import sys
+
+# The topic folders of internal/, lowest first: shared utilities (the
+# parameters' checks, plane geometry, threads and progress, the indexed
+# mesh) below the stages, each stage's settings in its own folder.
+FLOORS = ["Parameters", "Geometry", "Execution", "Mesh", "Segmentation", "Parameterization",
+          "Chart_selection", "Packing", "Atlas"]
 
 INCLUDE = re.compile(r'^\s*#\s*include\s*<(CGAL/Disk_segmentation[^>]*)>', re.M)
 
@@ -90,6 +99,22 @@ def main():
             for i in incs:
                 if is_io(i):
                     problems.append(f"{h} (not IO) includes {i}")
+
+    def floor(h):
+        parts = h.split("/")
+        if len(parts) == 5 and parts[2] == "internal":
+            return parts[3]
+        return None
+
+    for h, incs in headers.items():
+        if floor(h) is None:
+            continue
+        if floor(h) not in FLOORS:
+            problems.append(f"{h} is in the topic folder {floor(h)}, which FLOORS does not order")
+            continue
+        for i in incs:
+            if floor(i) in FLOORS and FLOORS.index(floor(i)) > FLOORS.index(floor(h)):
+                problems.append(f"{h} includes {i} from the higher floor {floor(i)}")
 
     reachable = set()
     todo = ["CGAL/Disk_segmentation.h"] + [h for h in headers if is_io(h)]

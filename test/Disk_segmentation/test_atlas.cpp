@@ -346,18 +346,20 @@ TEST(Atlas, ChainsOfValuesGiveTheStagesOneParameterType)
   const auto a = DS::parameters::number_of_seeds(12).max_stretch(4.).texture_resolution(512u);
   const auto b = DS::parameters::padding_in_texels(3).merge_threshold(0.5f).number_of_seeds(std::size_t(7))
                    .smooth_borders(false).texels_per_unit(100.).max_number_of_charts(20u);
-  const auto stages_a = DS::internal::canonical_parameters(a);
-  const auto stages_b = DS::internal::canonical_parameters(b);
+  const auto settings_a = DS::internal::segmentation_settings(a);
+  const auto settings_b = DS::internal::segmentation_settings(b);
+  const auto stages_a = DS::internal::stage_parameters(a, settings_a);
+  const auto stages_b = DS::internal::stage_parameters(b, settings_b);
   static_assert(std::is_same<decltype(stages_a), decltype(stages_b)>::value, "a value changed the stages' type");
-  // The values themselves are carried.
-  using CGAL::parameters::get_parameter;
-  EXPECT_EQ(get_parameter(stages_a, DS::internal_np::number_of_seeds), 12u);
-  EXPECT_EQ(get_parameter(stages_b, DS::internal_np::number_of_seeds), 7u);
-  EXPECT_FALSE(get_parameter(stages_b, DS::internal_np::smooth_borders));
-  EXPECT_DOUBLE_EQ(get_parameter(stages_b, DS::internal_np::merge_threshold), double(0.5f));
+  // The values themselves are carried, in the settings.
+  EXPECT_EQ(settings_a.number_of_seeds, 12u);
+  EXPECT_EQ(settings_b.number_of_seeds, 7u);
+  EXPECT_FALSE(settings_b.smooth_borders);
+  EXPECT_TRUE(settings_a.smooth_borders);
+  EXPECT_DOUBLE_EQ(settings_b.merge_threshold, double(0.5f));
   // A map is kept, and changes the type (so it is read as given).
   const auto vpm = get(CGAL::vertex_point, m);
-  const auto with_map = DS::internal::canonical_parameters(a.vertex_point_map(vpm));
+  const auto with_map = DS::internal::stage_parameters(a.vertex_point_map(vpm), settings_a);
   static_assert(!std::is_same<decltype(stages_a), decltype(with_map)>::value, "the point map was dropped");
 }
 

@@ -12,6 +12,7 @@
 #include <CGAL/Disk_segmentation/internal/Atlas/Atlas_measures.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Face_partition.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Indexed_triangle_mesh.h>
+#include <CGAL/Disk_segmentation/internal/Packing/Packing_settings.h>
 #include <CGAL/Disk_segmentation/internal/Parameters/Parameter_checks.h>
 #include <CGAL/Disk_segmentation/parameters.h>
 
@@ -140,16 +141,12 @@ template <typename TriangleMesh, typename FacePatchMap, typename UVMap,
 Atlas_quality atlas_quality(const TriangleMesh& tm, FacePatchMap face_patch_map, UVMap uv_map,
                             const NamedParameters& np = parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
   typedef boost::graph_traits<TriangleMesh> GT;
   using internal::Index;
 
   static_assert(internal::Check_patch_map<FacePatchMap>::value, "");
   static_assert(internal::Check_named_parameters<NamedParameters>::value, "");
-  const std::size_t resolution = internal::count_parameter(
-    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::texture_resolution), default_texture_resolution),
-    "texture_resolution");
+  const std::size_t resolution = internal::texture_resolution_parameter(np);
   if(resolution > (std::size_t(1) << 16))
     throw Input_error("atlas_quality: texture_resolution (" + std::to_string(resolution) +
                       ") is above 65536; the overlap count needs resolution^2 bytes");

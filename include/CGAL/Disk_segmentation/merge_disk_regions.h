@@ -13,8 +13,8 @@
 #include <CGAL/Disk_segmentation/internal/Mesh/Region_topology.h>
 #include <CGAL/Disk_segmentation/internal/Parameters/Parameter_checks.h>
 #include <CGAL/Disk_segmentation/internal/Segmentation/Region_merging.h>
+#include <CGAL/Disk_segmentation/internal/Segmentation/Segmentation_settings.h>
 #include <CGAL/Disk_segmentation/parameters.h>
-#include <CGAL/Disk_segmentation/regular_polygon_threshold.h>
 
 #include <boost/graph/graph_traits.hpp>
 
@@ -113,11 +113,11 @@ std::size_t merge_disk_regions(const TriangleMesh& tm,
 {
   static_assert(internal::Check_patch_map<FacePatchMap>::value, "");
   static_assert(internal::Check_named_parameters<NamedParameters>::value, "");
-  const double threshold = internal::merge_threshold_parameter(np);
+  const internal::Segmentation_settings settings = internal::segmentation_settings(np);
 
   internal::Indexed_triangle_mesh m;
   std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> face_handles;
-  internal::build_indexed_triangle_mesh(tm, np, m, face_handles);
+  internal::build_indexed_triangle_mesh(tm, internal::stage_parameters(np, settings), m, face_handles);
 
   auto patch_map = internal::checked_patch_map<TriangleMesh>(face_patch_map);
   const std::vector<std::vector<internal::Index> > regions =
@@ -134,7 +134,7 @@ std::size_t merge_disk_regions(const TriangleMesh& tm,
   }
 
   Merge_tree* tree = internal::merge_tree_parameter(np);
-  const std::size_t count = internal::merge_regions(m, labels, regions.size(), threshold, tree);
+  const std::size_t count = internal::merge_regions(m, labels, regions.size(), settings.merge_threshold, tree);
   if(tree != nullptr)
     internal::face_leaves_to_input_order(m, *tree);
   internal::write_face_labels(face_handles, labels, patch_map);

@@ -15,8 +15,9 @@
 #include <CGAL/Disk_segmentation/internal/Execution/Progress.h>
 #include <CGAL/Disk_segmentation/internal/Parameters/Canonical_parameters.h>
 #include <CGAL/Disk_segmentation/internal/Parameters/Parameter_checks.h>
-#include <CGAL/Disk_segmentation/internal/Parameters/Parameterization_settings.h>
+#include <CGAL/Disk_segmentation/internal/Chart_selection/Parameterization_settings.h>
 #include <CGAL/Disk_segmentation/internal/Segmentation/Region_merging.h>
+#include <CGAL/Disk_segmentation/internal/Segmentation/Segmentation_settings.h>
 #include <CGAL/Disk_segmentation/parameters.h>
 
 namespace CGAL {

@@ -6,11 +6,11 @@
 
 #include <CGAL/disable_warnings.h>
 
-#include <CGAL/Disk_segmentation/default_values.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Face_partition.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Indexed_triangle_mesh.h>
 #include <CGAL/Disk_segmentation/internal/Parameters/Parameter_checks.h>
 #include <CGAL/Disk_segmentation/internal/Segmentation/Region_refinement.h>
+#include <CGAL/Disk_segmentation/internal/Segmentation/Segmentation_settings.h>
 #include <CGAL/Disk_segmentation/internal/Segmentation/Voronoi_fps.h>
 #include <CGAL/Disk_segmentation/parameters.h>
 
@@ -102,25 +102,21 @@ std::size_t refine_to_topological_disks(const TriangleMesh& tm,
                                         FacePatchMap face_patch_map,
                                         const NamedParameters& np = parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-
   static_assert(internal::Check_patch_map<FacePatchMap>::value, "");
   static_assert(internal::Check_named_parameters<NamedParameters>::value, "");
-  const std::size_t k = internal::checked_number_of_subsamples(internal::count_parameter(
-    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_subsamples), default_number_of_subsamples),
-    "number_of_subsamples"));
+  const internal::Segmentation_settings settings = internal::segmentation_settings(np);
 
   internal::Indexed_triangle_mesh m;
   std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> face_handles;
-  internal::build_indexed_triangle_mesh(tm, np, m, face_handles);
+  internal::build_indexed_triangle_mesh(tm, internal::stage_parameters(np, settings), m, face_handles);
 
   auto patch_map = internal::checked_patch_map<TriangleMesh>(face_patch_map);
   const internal::Dual_arcs arcs = internal::dual_arcs(m);
   internal::Voronoi_fps fps(m, &arcs);
   std::vector<internal::Index> labels;
   const std::size_t count = internal::refine_regions(
-    m, fps, internal::group_faces_by_label(internal::read_face_labels(face_handles, patch_map)), k, labels);
+    m, fps, internal::group_faces_by_label(internal::read_face_labels(face_handles, patch_map)),
+    settings.number_of_subsamples, labels);
   internal::write_face_labels(face_handles, labels, patch_map);
   return count;
 }

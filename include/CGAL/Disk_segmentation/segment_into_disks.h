@@ -10,10 +10,10 @@
 #include <CGAL/Disk_segmentation/internal/Execution/Progress.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Face_partition.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Indexed_triangle_mesh.h>
-#include <CGAL/Disk_segmentation/internal/Parameters/Canonical_parameters.h>
 #include <CGAL/Disk_segmentation/internal/Parameters/Parameter_checks.h>
 #include <CGAL/Disk_segmentation/internal/Segmentation/Region_merging.h>
 #include <CGAL/Disk_segmentation/internal/Segmentation/Segmentation_pipeline.h>
+#include <CGAL/Disk_segmentation/internal/Segmentation/Segmentation_settings.h>
 #include <CGAL/Disk_segmentation/internal/Segmentation/Voronoi_fps_labels.h>
 #include <CGAL/Disk_segmentation/merge_disk_regions.h>
 #include <CGAL/Disk_segmentation/parameters.h>
@@ -80,10 +80,12 @@ std::size_t segment_into_disks(const TriangleMesh& tm,
 {
   static_assert(internal::Check_patch_map<FacePatchMap>::value, "");
   static_assert(internal::Check_named_parameters<NamedParameters>::value, "");
-  // One instantiation of the stages for any chain of values (see canonical_parameters()).
-  const auto stage_parameters = internal::canonical_parameters(np);
+  const internal::Segmentation_settings settings = internal::segmentation_settings(np);
+  // One instantiation of the stages for any chain of values (see stage_parameters()).
+  const auto stage_parameters = internal::stage_parameters(np, settings);
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
   internal::Indexed_triangle_mesh m;
-  std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> face_handles;
+  std::vector<face_descriptor> face_handles;
   internal::build_indexed_triangle_mesh(tm, stage_parameters, m, face_handles);
 
   std::vector<internal::Index> labels;
@@ -92,16 +94,16 @@ std::size_t segment_into_disks(const TriangleMesh& tm,
   Merge_tree staged_tree;
   internal::Progress progress = internal::Progress::from(np);
   const internal::Segmentation_steps steps = internal::segment_indexed(
-    m, face_handles, stage_parameters, labels, tree != nullptr ? &staged_tree : nullptr,
-    CGAL::parameters::choose_parameter(
-      CGAL::parameters::get_parameter(stage_parameters, internal_np::smooth_borders), default_smooth_borders),
-    progress);
+    m, face_handles, settings, stage_parameters, labels, tree != nullptr ? &staged_tree : nullptr, progress);
   if(tree != nullptr)
   {
     internal::face_leaves_to_input_order(m, staged_tree);
     *tree = std::move(staged_tree);
   }
-  internal::write_seeds(np, steps.seeds, face_handles);
+  std::vector<face_descriptor> seeds;
+  for(internal::Index s : steps.seeds)
+    seeds.push_back(face_handles[s]);
+  internal::write_seeds(np, seeds);
   auto patch_map = internal::checked_patch_map<TriangleMesh>(face_patch_map);
   internal::write_face_labels(face_handles, labels, patch_map);
   return steps.patches;

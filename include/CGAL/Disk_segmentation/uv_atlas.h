@@ -13,7 +13,7 @@
 #include <CGAL/Disk_segmentation/internal/Packing/Packing_settings.h>
 #include <CGAL/Disk_segmentation/internal/Packing/Patch_packing.h>
 #include <CGAL/Disk_segmentation/internal/Parameters/Parameter_checks.h>
-#include <CGAL/Disk_segmentation/internal/Parameters/Parameterization_settings.h>
+#include <CGAL/Disk_segmentation/internal/Chart_selection/Parameterization_settings.h>
 #include <CGAL/Disk_segmentation/internal/Segmentation/Region_merging.h>
 #include <CGAL/Disk_segmentation/internal/Segmentation/Region_refinement.h>
 #include <CGAL/Disk_segmentation/internal/Segmentation/Segmentation_pipeline.h>
@@ -48,16 +48,7 @@ template <typename NamedParameters = parameters::Default_named_parameters>
 void check_uv_atlas_parameters(const NamedParameters& np = parameters::default_values())
 {
   static_assert(internal::Check_named_parameters<NamedParameters>::value, "");
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  internal::checked_number_of_seeds(internal::count_parameter(
-    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_seeds), default_number_of_seeds),
-    "number_of_seeds"));
-  internal::checked_number_of_subsamples(internal::count_parameter(
-    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_subsamples), default_number_of_subsamples),
-    "number_of_subsamples"));
-  internal::merge_threshold_parameter(np);
-  internal::crease_penalty_parameter(np);
+  internal::segmentation_settings(np);
   internal::parameterization_settings(np);
   internal::packing_settings(np);
 }
@@ -179,12 +170,13 @@ Atlas_report uv_atlas(const TriangleMesh& tm, UVMap uv_map, const NamedParameter
   packing.progress = &progress;
   // The stages see the values as checked settings and a chain whose type
   // depends only on the maps given: they compile once for any chain of values.
-  const auto stage_parameters = internal::canonical_parameters(np);
+  const internal::Segmentation_settings segmentation = internal::segmentation_settings(np);
+  const auto stage_parameters = internal::stage_parameters(np, segmentation);
   Merge_tree tree;
   std::vector<face_descriptor> seeds;
   const Staged_uv_map staged_uv = get(CGAL::dynamic_halfedge_property_t<UV_point>(), tm);
   Atlas_report report =
-    internal::segment_and_parameterize(tm, face_patch_map, staged_uv, stage_parameters,
+    internal::segment_and_parameterize(tm, face_patch_map, staged_uv, stage_parameters, segmentation,
                                        internal::parameterization_settings(np), packing, progress, tree, seeds);
 
   // The indexed mesh is freed: the packing reads the mesh again.
@@ -205,10 +197,7 @@ Atlas_report uv_atlas(const TriangleMesh& tm, UVMap uv_map, const NamedParameter
   }
   if(Merge_tree* user_tree = internal::merge_tree_parameter(np))
     *user_tree = std::move(tree);
-  auto seeds_out =
-    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::seeds_output_iterator), CGAL::Emptyset_iterator());
-  for(face_descriptor f : seeds)
-    *seeds_out++ = f;
+  internal::write_seeds(np, seeds);
 
   report.total_seconds = total.time();
   return report;

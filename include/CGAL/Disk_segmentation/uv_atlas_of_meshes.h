@@ -123,7 +123,8 @@ Multi_mesh_atlas_report uv_atlas_of_meshes(const std::vector<const TriangleMesh*
   internal::Progress progress = internal::Progress::from(np);
   packing.progress = &progress;
   const internal::Parameterization_settings settings = internal::parameterization_settings(np);
-  const auto stage_parameters = internal::canonical_parameters(np);
+  const internal::Segmentation_settings segmentation = internal::segmentation_settings(np);
+  const auto stage_parameters = internal::stage_parameters(np, segmentation);
 
   // Each mesh alone, into maps of its own.
   Multi_mesh_atlas_report report;
@@ -140,7 +141,8 @@ Multi_mesh_atlas_report uv_atlas_of_meshes(const std::vector<const TriangleMesh*
     try
     {
       report.meshes.push_back(internal::segment_and_parameterize(tm, staged_patches.back(), staged_uvs.back(),
-                                                                 stage_parameters, settings, packing, progress, tree,
+                                                                 stage_parameters, segmentation, settings, packing,
+                                                                 progress, tree,
                                                                  seeds));
     }
     catch(const Input_error& e)
@@ -156,10 +158,7 @@ Multi_mesh_atlas_report uv_atlas_of_meshes(const std::vector<const TriangleMesh*
   timer.start();
   progress("packing", 0, 1);
   // The copy holds the points the packing measures: those of `vertex_point_map`.
-  auto vpm = [&np](const TriangleMesh& tm) {
-    return CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
-                                              get_const_property_map(CGAL::vertex_point, tm));
-  };
+  auto vpm = [&np](const TriangleMesh& tm) { return internal::vertex_point_map_parameter(tm, np); };
   typedef typename boost::property_traits<decltype(vpm(*meshes.front()))>::value_type Point;
   typedef CGAL::Surface_mesh<Point> Copy;
   Copy all;

@@ -9,6 +9,7 @@
 #include <CGAL/Disk_segmentation/internal/Mesh/Face_partition.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Indexed_triangle_mesh.h>
 #include <CGAL/Disk_segmentation/internal/Parameters/Parameter_checks.h>
+#include <CGAL/Disk_segmentation/internal/Segmentation/Segmentation_settings.h>
 #include <CGAL/Disk_segmentation/internal/Segmentation/Voronoi_fps.h>
 #include <CGAL/Disk_segmentation/internal/Segmentation/Voronoi_fps_labels.h>
 #include <CGAL/Disk_segmentation/parameters.h>
@@ -119,15 +120,21 @@ std::size_t voronoi_fps_segmentation(const TriangleMesh& tm,
 {
   static_assert(internal::Check_patch_map<FacePatchMap>::value, "");
   static_assert(internal::Check_named_parameters<NamedParameters>::value, "");
+  const internal::Segmentation_settings settings = internal::segmentation_settings(np);
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
   internal::Indexed_triangle_mesh m;
-  std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> face_handles;
-  internal::build_indexed_triangle_mesh(tm, np, m, face_handles);
+  std::vector<face_descriptor> face_handles;
+  internal::build_indexed_triangle_mesh(tm, internal::stage_parameters(np, settings), m, face_handles);
 
   internal::Voronoi_fps fps(m);
   std::vector<internal::Index> labels;
-  const std::vector<internal::Index> seeds = internal::voronoi_fps_labels(m, face_handles, fps, np, labels);
+  const std::vector<internal::Index> seeds =
+    internal::voronoi_fps_labels(m, face_handles, fps, settings.number_of_seeds, np, labels);
 
-  internal::write_seeds(np, seeds, face_handles);
+  std::vector<face_descriptor> seed_faces;
+  for(internal::Index s : seeds)
+    seed_faces.push_back(face_handles[s]);
+  internal::write_seeds(np, seed_faces);
   auto patch_map = internal::checked_patch_map<TriangleMesh>(face_patch_map);
   internal::write_face_labels(face_handles, labels, patch_map);
   return seeds.size();

@@ -22,6 +22,7 @@
 #include <limits>
 #include <string>
 #include <system_error>
+#include <vector>
 
 namespace CGAL {
 namespace Disk_segmentation {
@@ -164,31 +165,22 @@ struct Parameter_name
 };
 
 /// \ingroup PkgDiskSegmentationIO
-/// Every parameter a front end sets, with its three names.
-inline const std::array<Parameter_name, 20>& parameter_names()
+/// Every parameter a front end sets, with its three names (those of
+/// `parameters_interface.h` that have a front-end option).
+inline const std::vector<Parameter_name>& parameter_names()
 {
-  static const std::array<Parameter_name, 20> names = { {
-    { "number_of_seeds", "-n/--seeds", "n (seeds)" },
-    { "number_of_subsamples", "-k/--subsamples", "k (subsamples)" },
-    { "merge_threshold", "--threshold", "threshold" },
-    { "crease_penalty", "--crease-penalty", "crease_penalty" },
-    { "parameterization_method", "--method", "method" },
-    { "packing_method", "--packer", "packer" },
-    { "texture_resolution", "--resolution", "resolution" },
-    { "texture_height", "--resolution (its height)", "resolution (its height)" },
-    { "padding_in_texels", "--padding", "padding" },
-    { "texels_per_unit", "--texels-per-unit", "texels_per_unit" },
-    { "max_number_of_pages", "--max-pages", "max_pages" },
-    { "number_of_threads", "--threads", "threads" },
-    { "max_chart_faces", "--max-chart-faces", "max_chart_faces" },
-    { "max_number_of_charts", "--max-charts", "max_charts" },
-    { "max_angle_distortion", "--max-angle-distortion", "max_angle_distortion" },
-    { "max_area_distortion", "--max-area-distortion", "max_area_distortion" },
-    { "max_stretch_p95", "--max-stretch-p95", "max_stretch_p95" },
-    { "max_stretch", "--max-stretch", "max_stretch" },
-    { "max_area_scale", "--max-area-scale", "max_area_scale" },
-    { "min_convexity", "--min-convexity", "min_convexity" },
-  } };
+  static const std::vector<Parameter_name> names = [] {
+    const Parameter_name all[] = {
+#define CGAL_DISK_SEGMENTATION_PARAMETER(name, flag, argument) { #name, flag, argument },
+#include <CGAL/Disk_segmentation/parameters_interface.h>
+#undef CGAL_DISK_SEGMENTATION_PARAMETER
+    };
+    std::vector<Parameter_name> set;
+    for(const Parameter_name& name : all)
+      if(*name.flag != '\0')
+        set.push_back(name);
+    return set;
+  }();
   return names;
 }
 

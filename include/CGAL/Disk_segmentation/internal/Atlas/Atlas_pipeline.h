@@ -15,7 +15,7 @@
 #include <CGAL/Disk_segmentation/internal/Mesh/Face_partition.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Indexed_triangle_mesh.h>
 #include <CGAL/Disk_segmentation/internal/Packing/Packing_settings.h>
-#include <CGAL/Disk_segmentation/internal/Parameters/Parameterization_settings.h>
+#include <CGAL/Disk_segmentation/internal/Chart_selection/Parameterization_settings.h>
 #include <CGAL/Disk_segmentation/internal/Segmentation/Region_merging.h>
 #include <CGAL/Disk_segmentation/internal/Segmentation/Segmentation_pipeline.h>
 #include <CGAL/Disk_segmentation/parameters.h>
@@ -37,15 +37,15 @@ namespace internal {
 // uv_atlas() up to the packing: the patches of `tm` in `face_patch_map`,
 // their charts' UVs in `uv_map` (not yet packed), the merge tree and the
 // seeds. Shared with uv_atlas_of_meshes(). `np` is a chain of
-// canonical_parameters(); the other values come checked in `settings` and
-// `packing`.
+// stage_parameters(); the values come checked in `segmentation`,
+// `settings` and `packing`.
 template <typename TriangleMesh, typename FacePatchMap, typename UVMap, typename NamedParameters>
 Atlas_report segment_and_parameterize(const TriangleMesh& tm, FacePatchMap face_patch_map, UVMap uv_map,
-                                      const NamedParameters& np, const Parameterization_settings& settings,
+                                      const NamedParameters& np, const Segmentation_settings& segmentation,
+                                      const Parameterization_settings& settings,
                                       const Packing_settings& packing, Progress& progress, Merge_tree& tree,
                                       std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& seeds)
 {
-  using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   using CGAL::parameters::is_default_parameter;
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
@@ -56,10 +56,8 @@ Atlas_report segment_and_parameterize(const TriangleMesh& tm, FacePatchMap face_
     const Indexed_input<TriangleMesh> input(tm, np);
     {
       std::vector<Index> labels;
-      const Segmentation_steps steps = segment_indexed(
-        input.mesh, input.face_handles, np, labels, &tree,
-        choose_parameter(get_parameter(np, Disk_segmentation::internal_np::smooth_borders), default_smooth_borders),
-        progress);
+      const Segmentation_steps steps =
+        segment_indexed(input.mesh, input.face_handles, segmentation, np, labels, &tree, progress);
       // Charts only split from here: too many patches for the padding can
       // be told before the parameterization.
       check_packing_capacity(packing, steps.patches);

@@ -5,7 +5,7 @@
 #define CGAL_DISK_SEGMENTATION_INTERNAL_CHART_SELECTION_CHART_MERGING_H
 
 #include <CGAL/Disk_segmentation/internal/Chart_selection/Chart_choice.h>
-#include <CGAL/Disk_segmentation/internal/Parameters/Parameterization_settings.h>
+#include <CGAL/Disk_segmentation/internal/Chart_selection/Parameterization_settings.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Chart_distortion.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Chart_parameterization.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Chart_warm_start.h>

@@ -22,7 +22,7 @@
 #include <CGAL/Disk_segmentation/internal/Mesh/Region_topology.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Chart_distortion.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Chart_parameterization.h>
-#include <CGAL/Disk_segmentation/internal/Parameters/Parameterization_settings.h>
+#include <CGAL/Disk_segmentation/internal/Chart_selection/Parameterization_settings.h>
 #include <CGAL/Disk_segmentation/internal/Segmentation/Border_smoother.h>
 #include <CGAL/Disk_segmentation/internal/Segmentation/Region_curvature.h>
 

@@ -664,8 +664,7 @@ auto make_coordinates_reader(const TriangleMesh& tm, const NamedParameters& np)
     typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type Geom_traits;
     using CGAL::parameters::choose_parameter;
     using CGAL::parameters::get_parameter;
-    const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                      get_const_property_map(CGAL::vertex_point, tm));
+    const auto vpm = vertex_point_map_parameter(tm, np);
     const Geom_traits gt = choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits));
     return [vpm, gt](vertex_descriptor v) -> std::array<double, 3>
     {

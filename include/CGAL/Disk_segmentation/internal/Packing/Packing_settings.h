@@ -50,6 +50,17 @@ inline void report_packing_trial(const Packing_settings& s, std::size_t& trial)
     (*s.progress)("packing", (std::min)(++trial, reported_packing_trials - 1), reported_packing_trials);
 }
 
+// The `texture_resolution` named parameter, as a count.
+template <typename NamedParameters>
+std::size_t texture_resolution_parameter(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  return count_parameter(
+    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::texture_resolution), default_texture_resolution),
+    "texture_resolution");
+}
+
 template <typename NamedParameters>
 Packing_settings packing_settings(const NamedParameters& np)
 {
@@ -64,9 +75,7 @@ Packing_settings packing_settings(const NamedParameters& np)
 
   // Read through double so that a negative signed argument is caught rather
   // than wrapped around.
-  s.resolution = static_cast<double>(count_parameter(
-    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::texture_resolution), default_texture_resolution),
-    "texture_resolution"));
+  s.resolution = static_cast<double>(texture_resolution_parameter(np));
   if(!(s.resolution >= 1.) || !std::isfinite(s.resolution))
     throw Input_error("pack_patches: texture_resolution must be at least 1");
   s.height = s.resolution;

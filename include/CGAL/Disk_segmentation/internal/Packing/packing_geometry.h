@@ -1,13 +1,15 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Planar geometry of chart packing: convex hulls of chart UVs and the choice
-// of the rotation under which a chart is boxed.
+// Planar geometry of chart packing: the choice of the rotation under which
+// a chart is boxed, and the slabs its edges cross.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_PACKING_PACKING_GEOMETRY_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_PACKING_PACKING_GEOMETRY_H
 
 #include <CGAL/disable_warnings.h>
+
+#include <CGAL/Disk_segmentation/internal/Geometry/Planar_hull.h>
 
 #include <algorithm>
 #include <cmath>
@@ -18,19 +20,6 @@
 namespace CGAL {
 namespace Disk_segmentation {
 namespace internal {
-
-struct Packing_point
-{
-  double x, y;
-};
-
-inline double packing_dot(const Packing_point& a, const Packing_point& b) { return a.x * b.x + a.y * b.y; }
-
-// Twice the signed area of (o, a, b): positive for a left turn.
-inline double packing_cross(const Packing_point& o, const Packing_point& a, const Packing_point& b)
-{
-  return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
-}
 
 // A rotation p -> (c x - s y, s x + c y). It is kept as a (cosine, sine)
 // pair so that quarter turns compose exactly.
@@ -78,83 +67,6 @@ struct Packing_box
     return b;
   }
 };
-
-// Drops the points strictly inside the octagon of the extreme points in eight
-// directions (Akl-Toussaint): they cannot be hull vertices, and in a chart
-// they are most of the corners, so the sort that follows stays short.
-inline void discard_inner_points(std::vector<Packing_point>& points)
-{
-  if(points.size() < 32)
-    return;
-  // Directions at 0, 45, ..., 315 degrees (unnormalized): their support
-  // points come in counterclockwise order around the hull.
-  auto project = [](const Packing_point& p, double* v)
-  {
-    v[0] = p.x; v[1] = p.x + p.y; v[2] = p.y; v[3] = p.y - p.x;
-    v[4] = -p.x; v[5] = -p.x - p.y; v[6] = -p.y; v[7] = p.x - p.y;
-  };
-  double best_value[8], value[8];
-  std::size_t best[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
-  project(points[0], best_value);
-  for(std::size_t i = 1; i < points.size(); ++i)
-  {
-    project(points[i], value);
-    for(int k = 0; k < 8; ++k)
-      if(value[k] > best_value[k])
-      {
-        best_value[k] = value[k];
-        best[k] = i;
-      }
-  }
-  Packing_point octagon[8];
-  for(int k = 0; k < 8; ++k)
-    octagon[k] = points[best[k]];
-
-  std::size_t kept = 0;
-  for(std::size_t i = 0; i < points.size(); ++i)
-  {
-    bool inside = true;
-    for(int k = 0; k < 8 && inside; ++k)
-      inside = packing_cross(octagon[k], octagon[(k + 1) & 7], points[i]) > 0.;
-    if(!inside)
-      points[kept++] = points[i];
-  }
-  points.resize(kept);
-}
-
-// Convex hull, counterclockwise, without collinear vertices (Andrew's
-// monotone chain). Reorders `points`. Fewer than three distinct or only
-// collinear points give the one or two extreme points.
-inline void convex_hull(std::vector<Packing_point>& points, std::vector<Packing_point>& hull)
-{
-  hull.clear();
-  discard_inner_points(points);
-  std::sort(points.begin(), points.end(), [](const Packing_point& a, const Packing_point& b)
-            { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-  points.erase(std::unique(points.begin(), points.end(), [](const Packing_point& a, const Packing_point& b)
-                           { return a.x == b.x && a.y == b.y; }),
-               points.end());
-  const std::size_t n = points.size();
-  if(n < 3)
-  {
-    hull = points;
-    return;
-  }
-  hull.resize(2 * n);
-  // The inner loops pop only what was pushed: at most 2 n pops in all.
-  std::size_t k = 0;
-  for(std::size_t i = 0; i < n; ++i)
-  {
-    while(k >= 2 && packing_cross(hull[k - 2], hull[k - 1], points[i]) <= 0.) --k;
-    hull[k++] = points[i];
-  }
-  for(std::size_t i = n - 1, lower = k + 1; i-- > 0;)
-  {
-    while(k >= lower && packing_cross(hull[k - 2], hull[k - 1], points[i]) <= 0.) --k;
-    hull[k++] = points[i];
-  }
-  hull.resize(k - 1);
-}
 
 // Extents of a convex polygon in the frame of a unit vector u: u and
 // v = u turned a quarter counterclockwise. `e` joins the extreme vertices

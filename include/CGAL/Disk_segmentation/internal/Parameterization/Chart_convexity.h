@@ -8,7 +8,7 @@
 #define CGAL_DISK_SEGMENTATION_INTERNAL_PARAMETERIZATION_CHART_CONVEXITY_H
 
 #include <CGAL/Disk_segmentation/internal/Parameterization/Chart_parameterization.h>
-#include <CGAL/Disk_segmentation/internal/Packing/packing_geometry.h>
+#include <CGAL/Disk_segmentation/internal/Geometry/Planar_hull.h>
 
 #include <cmath>
 #include <vector>

@@ -7,8 +7,8 @@
 // not) would instantiate the whole pipeline again. The public functions read
 // the values into settings structures and hand the stages a chain whose type
 // depends only on the property maps and the seeds' kinds that were given
-// (forward_mesh_parameters(); the segmentation adds its values, see
-// canonical_parameters()): every chain of plain values compiles the
+// (forward_mesh_parameters(); the segmentation adds its crease penalty, see
+// stage_parameters()): every chain of plain values compiles the
 // pipeline once.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_PARAMETERS_CANONICAL_PARAMETERS_H

@@ -14,6 +14,7 @@
 #include <CGAL/Disk_segmentation/parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/property_map.h>
 
 #include <boost/graph/graph_traits.hpp>
@@ -73,6 +74,16 @@ unsigned int number_of_threads_parameter(const NamedParameters& np)
     count_parameter(choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_threads), 0u),
                     "number_of_threads"),
     std::size_t((std::numeric_limits<unsigned int>::max)())));
+}
+
+// The `vertex_point_map` named parameter, or the mesh's own points.
+template <typename TriangleMesh, typename NamedParameters>
+auto vertex_point_map_parameter(const TriangleMesh& tm, const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  return choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                          get_const_property_map(CGAL::vertex_point, tm));
 }
 
 // Patch ids are written and read as integers; a floating-point patch map
@@ -147,26 +158,9 @@ struct is_kernel_point<Point, std::void_t<typename Point::R>> : std::true_type
 // The tags of the named parameters that some function of the package reads:
 // all of its own and the CGAL ones it takes.
 typedef std::tuple<
-  Disk_segmentation::internal_np::number_of_seeds_t, Disk_segmentation::internal_np::number_of_subsamples_t,
-  Disk_segmentation::internal_np::merge_threshold_t, Disk_segmentation::internal_np::first_seed_t,
-  Disk_segmentation::internal_np::crease_penalty_t,
-  Disk_segmentation::internal_np::seeds_output_iterator_t,
-  Disk_segmentation::internal_np::parameterization_method_t, Disk_segmentation::internal_np::parameterizer_t,
-  Disk_segmentation::internal_np::use_fallback_t,
-  Disk_segmentation::internal_np::packing_method_t, Disk_segmentation::internal_np::texture_resolution_t,
-  Disk_segmentation::internal_np::texture_height_t,
-  Disk_segmentation::internal_np::padding_in_texels_t, Disk_segmentation::internal_np::texels_per_unit_t,
-  Disk_segmentation::internal_np::max_number_of_pages_t, Disk_segmentation::internal_np::number_of_threads_t,
-  Disk_segmentation::internal_np::progress_callback_t, Disk_segmentation::internal_np::require_disk_patches_t,
-  Disk_segmentation::internal_np::max_area_distortion_t, Disk_segmentation::internal_np::max_chart_faces_t,
-  Disk_segmentation::internal_np::max_number_of_charts_t,
-  Disk_segmentation::internal_np::max_angle_distortion_t, Disk_segmentation::internal_np::max_stretch_t,
-  Disk_segmentation::internal_np::max_area_scale_t, Disk_segmentation::internal_np::max_stretch_p95_t,
-  Disk_segmentation::internal_np::min_convexity_t,
-  Disk_segmentation::internal_np::merge_tree_t, Disk_segmentation::internal_np::distortion_bound_t,
-  Disk_segmentation::internal_np::smooth_borders_t, Disk_segmentation::internal_np::merge_charts_t,
-  Disk_segmentation::internal_np::straighten_borders_t, Disk_segmentation::internal_np::face_material_map_t,
-  Disk_segmentation::internal_np::face_polygon_map_t,
+#define CGAL_DISK_SEGMENTATION_PARAMETER(name, flag, argument) Disk_segmentation::internal_np::name##_t,
+#include <CGAL/Disk_segmentation/parameters_interface.h>
+#undef CGAL_DISK_SEGMENTATION_PARAMETER
   CGAL::internal_np::vertex_point_t, CGAL::internal_np::geom_traits_t, CGAL::internal_np::face_index_t,
   CGAL::internal_np::vertex_index_t, CGAL::internal_np::random_seed_t, CGAL::internal_np::face_patch_t,
   CGAL::internal_np::all_default_t>

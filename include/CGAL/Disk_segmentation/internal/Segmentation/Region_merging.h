@@ -6,39 +6,17 @@
 
 #include <CGAL/disable_warnings.h>
 
-#include <CGAL/Disk_segmentation/Input_error.h>
 #include <CGAL/Disk_segmentation/Merge_tree.h>
-#include <CGAL/Disk_segmentation/default_values.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Face_partition.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Indexed_triangle_mesh.h>
 #include <CGAL/Disk_segmentation/internal/Segmentation/Disk_region_merger.h>
-#include <CGAL/Disk_segmentation/parameters.h>
-#include <CGAL/Disk_segmentation/regular_polygon_threshold.h>
 
-#include <cmath>
 #include <cstddef>
 #include <vector>
 
 namespace CGAL {
 namespace Disk_segmentation {
 namespace internal {
-
-inline double checked_merge_threshold(double eps)
-{
-  if(!(eps >= 0.) || !std::isfinite(eps))
-    throw Input_error("merge_threshold must be a finite number >= 0");
-  return eps;
-}
-
-template <typename NamedParameters>
-double merge_threshold_parameter(const NamedParameters& np)
-{
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  return checked_merge_threshold(
-    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::merge_threshold),
-                     regular_polygon_threshold(default_merge_threshold_sides)));
-}
 
 // `labels` numbers disk regions canonically; merges them and renumbers.
 // `tree`, if not null, receives the merges and the leaf of every face.
@@ -55,16 +33,6 @@ inline std::size_t merge_regions(const Indexed_triangle_mesh& m, std::vector<Ind
   if(tree != nullptr)
     tree->merges = merger.merges();
   return make_canonical(labels);
-}
-
-// The `merge_tree` named parameter: a Merge_tree* or null.
-template <typename NamedParameters>
-Merge_tree* merge_tree_parameter(const NamedParameters& np)
-{
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  return choose_parameter(get_parameter(np, Disk_segmentation::internal_np::merge_tree),
-                          static_cast<Merge_tree*>(nullptr));
 }
 
 // A Merge_tree lists the leaves of the faces in the order of faces(tm),

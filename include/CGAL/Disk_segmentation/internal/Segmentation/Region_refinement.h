@@ -6,7 +6,6 @@
 
 #include <CGAL/disable_warnings.h>
 
-#include <CGAL/Disk_segmentation/Input_error.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Face_partition.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Indexed_triangle_mesh.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Region_topology.h>
@@ -21,13 +20,6 @@
 namespace CGAL {
 namespace Disk_segmentation {
 namespace internal {
-
-inline std::size_t checked_number_of_subsamples(std::size_t k)
-{
-  if(k < 2)
-    throw Input_error("number_of_subsamples must be at least 2");
-  return k;
-}
 
 // The paper's Algorithm 1 on an indexed mesh. `regions` lists the faces of
 // each region in increasing order (empty regions are ignored); returns the

@@ -7,18 +7,15 @@
 #include <CGAL/disable_warnings.h>
 
 #include <CGAL/Disk_segmentation/Merge_tree.h>
-#include <CGAL/Disk_segmentation/default_values.h>
 #include <CGAL/Disk_segmentation/internal/Execution/Progress.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Face_partition.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Indexed_triangle_mesh.h>
-#include <CGAL/Disk_segmentation/internal/Parameters/Canonical_parameters.h>
-#include <CGAL/Disk_segmentation/internal/Parameters/Parameter_checks.h>
 #include <CGAL/Disk_segmentation/internal/Segmentation/Border_smoother.h>
 #include <CGAL/Disk_segmentation/internal/Segmentation/Region_merging.h>
 #include <CGAL/Disk_segmentation/internal/Segmentation/Region_refinement.h>
+#include <CGAL/Disk_segmentation/internal/Segmentation/Segmentation_settings.h>
 #include <CGAL/Disk_segmentation/internal/Segmentation/Voronoi_fps.h>
 #include <CGAL/Disk_segmentation/internal/Segmentation/Voronoi_fps_labels.h>
-#include <CGAL/Disk_segmentation/parameters.h>
 
 #include <CGAL/Real_timer.h>
 
@@ -38,47 +35,17 @@ struct Segmentation_steps
   std::vector<Index> seeds;
 };
 
-// The segmentation's values, read as the stages read them (counts checked
-// there, the threshold here), and the mesh's (forward_mesh_parameters()); `smooth_borders`
-// is always given, so that a chain with it and one without are one type.
-template <typename NamedParameters>
-auto canonical_parameters(const NamedParameters& np)
-{
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  const std::size_t seeds = count_parameter(
-    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_seeds), default_number_of_seeds),
-    "number_of_seeds");
-  const std::size_t subsamples = count_parameter(
-    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_subsamples), default_number_of_subsamples),
-    "number_of_subsamples");
-  const bool smooth = static_cast<bool>(
-    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::smooth_borders), default_smooth_borders));
-  return forward_mesh_parameters(np, parameters::number_of_seeds(seeds)
-                                       .number_of_subsamples(subsamples)
-                                       .merge_threshold(merge_threshold_parameter(np))
-                                       .crease_penalty(crease_penalty_parameter(np))
-                                       .smooth_borders(smooth));
-}
-
-// The whole method on an indexed mesh; `labels` receives the patch ids and
-// `tree` (if not null) the merges. Reports the end of each step to
-// `progress` (which may cancel).
-// With `smooth`, the borders of the refined regions lose their saw teeth
-// (Border_smoother) before they are merged.
+// The whole method on an indexed mesh with the settings `s`; `labels`
+// receives the patch ids and `tree` (if not null) the merges; `np` gives
+// the first seed and the random seed, if any. Reports the end of each step
+// to `progress` (which may cancel). With `s.smooth_borders`, the borders of
+// the refined regions lose their saw teeth (Border_smoother) before they
+// are merged.
 template <typename NamedParameters, typename FaceHandles>
 Segmentation_steps segment_indexed(const Indexed_triangle_mesh& m, const FaceHandles& face_handles,
-                                   const NamedParameters& np, std::vector<Index>& labels, Merge_tree* tree,
-                                   bool smooth, Progress& progress)
+                                   const Segmentation_settings& s, const NamedParameters& np,
+                                   std::vector<Index>& labels, Merge_tree* tree, Progress& progress)
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-
-  const std::size_t k = checked_number_of_subsamples(count_parameter(
-    choose_parameter(get_parameter(np, Disk_segmentation::internal_np::number_of_subsamples), default_number_of_subsamples),
-    "number_of_subsamples"));
-  const double threshold = merge_threshold_parameter(np);
-
   Segmentation_steps steps;
   CGAL::Real_timer timer;
   timer.start();
@@ -86,13 +53,13 @@ Segmentation_steps segment_indexed(const Indexed_triangle_mesh& m, const FaceHan
   const Dual_arcs arcs = dual_arcs(m);
   Voronoi_fps fps(m, &arcs);
   progress("segmentation", 0, 3);
-  steps.seeds = voronoi_fps_labels(m, face_handles, fps, np, labels);
+  steps.seeds = voronoi_fps_labels(m, face_handles, fps, s.number_of_seeds, np, labels);
   steps.voronoi_cells = steps.seeds.size();
   steps.voronoi_seconds = timer.time();
   progress("segmentation", 1, 3);
   timer.reset();
-  steps.refined_regions = refine_regions(m, fps, group_faces_by_label(labels), k, labels);
-  if(smooth)
+  steps.refined_regions = refine_regions(m, fps, group_faces_by_label(labels), s.number_of_subsamples, labels);
+  if(s.smooth_borders)
   {
     std::vector<Index> all(m.number_of_faces());
     for(Index f = 0; f < all.size(); ++f)
@@ -102,7 +69,7 @@ Segmentation_steps segment_indexed(const Indexed_triangle_mesh& m, const FaceHan
   steps.refine_seconds = timer.time();
   progress("segmentation", 2, 3);
   timer.reset();
-  steps.patches = merge_regions(m, labels, steps.refined_regions, threshold, tree);
+  steps.patches = merge_regions(m, labels, steps.refined_regions, s.merge_threshold, tree);
   steps.merge_seconds = timer.time();
   progress("segmentation", 3, 3);
   return steps;

@@ -1,8 +1,11 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The named parameters of parameterize_patches() (the method, the bound,
+// the chart budget, the border passes), read and checked once.
 
-#ifndef CGAL_DISK_SEGMENTATION_INTERNAL_PARAMETERS_PARAMETERIZATION_SETTINGS_H
-#define CGAL_DISK_SEGMENTATION_INTERNAL_PARAMETERS_PARAMETERIZATION_SETTINGS_H
+#ifndef CGAL_DISK_SEGMENTATION_INTERNAL_CHART_SELECTION_PARAMETERIZATION_SETTINGS_H
+#define CGAL_DISK_SEGMENTATION_INTERNAL_CHART_SELECTION_PARAMETERIZATION_SETTINGS_H
 
 #include <CGAL/disable_warnings.h>
 
@@ -115,4 +118,4 @@ Parameterization_settings parameterization_settings(const NamedParameters& np)
 
 #include <CGAL/enable_warnings.h>
 
-#endif // CGAL_DISK_SEGMENTATION_INTERNAL_PARAMETERS_PARAMETERIZATION_SETTINGS_H
+#endif // CGAL_DISK_SEGMENTATION_INTERNAL_CHART_SELECTION_PARAMETERIZATION_SETTINGS_H
