@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Checks the package's include graph against the layering the README and
-the manual describe:
+"""Checks the package's include graph against the layering the manual
+describes ("How the Package Is Built"; "Building, Installing and Testing"):
 
   - the graph of the package's headers has no cycle;
   - a header under internal/ includes no public header that does work
