@@ -27,6 +27,7 @@
 #include <condition_variable>
 #include <cstdint>
 #include <exception>
+#include <fstream>
 #include <functional>
 #include <mutex>
 #include <thread>
@@ -36,6 +37,8 @@
 #include <string>
 #include <unordered_map>
 #include <vector>
+
+#include <sys/resource.h>
 
 namespace py = pybind11;
 namespace DS = CGAL::Disk_segmentation;
@@ -283,6 +286,28 @@ void for_each_corner(const Mesh& mesh, const Soup& soup, std::size_t f, const Vi
         visit(h, j);
 }
 
+// The process's peak resident memory so far, in MB, that Atlas.report gives
+// as peak_rss_mb: a measure of this process, which the library's report
+// leaves to its caller. Linux's VmHWM first (getrusage()'s ru_maxrss may
+// hold the peak of a parent's address space from before exec()).
+double peak_rss_mb()
+{
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while(std::getline(status, line))
+    if(line.compare(0, 6, "VmHWM:") == 0)
+    {
+      std::istringstream kilobytes(line.substr(6));
+      double kb = 0;
+      if(kilobytes >> kb)
+        return kb / 1024.;
+    }
+  struct rusage usage;
+  if(::getrusage(RUSAGE_SELF, &usage) != 0)
+    return 0;
+  return double(usage.ru_maxrss) / 1024.;  // KB on Linux
+}
+
 // Per-corner UVs and chart ids in the soup's face and corner order.
 py::dict atlas_result(const Soup& soup, const Mesh& mesh, const Patch_map& patch, const UV_map& uv,
                       const std::string& report)
@@ -497,6 +522,7 @@ py::dict run_atlas(const py::handle& vertices, const py::handle& faces, const py
   changes.pinched_vertices_split = soup.pinched_vertices_split;
   nlohmann::json json =
     DS::IO::atlas_report_json("<arrays>", mesh.number_of_vertices(), report, method_name, packer_name, 0., changes);
+  json["peak_rss_mb"] = peak_rss_mb();
   return atlas_result(soup, mesh, patch, uv, json.dump());
 }
 
@@ -570,6 +596,7 @@ py::tuple run_atlas_of_meshes(const py::sequence& parts, const py::dict& o)
     json["packing"] = DS::IO::packing_report_json(report.packing, report.first_chart[i], report.first_chart[i + 1]);
     json["first_chart"] = report.first_chart[i];
     json["total_charts"] = report.first_chart.back();
+    json["peak_rss_mb"] = peak_rss_mb();
     results.append(atlas_result(soups[i], meshes[i], patches[i], uvs[i], json.dump()));
   }
   return py::make_tuple(results, DS::IO::packing_report_json(report.packing).dump());

@@ -2,52 +2,27 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 
 // The JSON report of an atlas (nlohmann-json), as disk_uv --report and the
-// Python module's Atlas.report write it.
+// Python module's Atlas.report write it. Only what the library computed:
+// a measure of the process (its peak memory) is the caller's to add.
 
 #ifndef CGAL_DISK_SEGMENTATION_IO_ATLAS_REPORT_JSON_H
 #define CGAL_DISK_SEGMENTATION_IO_ATLAS_REPORT_JSON_H
 
-#include <CGAL/Disk_segmentation/IO/read_triangle_mesh.h>
+#include <CGAL/Disk_segmentation/Atlas_report.h>
+#include <CGAL/Disk_segmentation/IO/Read_options.h>
+#include <CGAL/Disk_segmentation/Packing_report.h>
 #include <CGAL/Disk_segmentation/Parameterization_method.h>
-#include <CGAL/Disk_segmentation/uv_atlas.h>
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <fstream>
-#include <sstream>
+#include <cstddef>
 #include <string>
 #include <vector>
-#include <sys/resource.h>
 
 namespace CGAL {
 namespace Disk_segmentation {
 namespace IO {
-namespace internal {
-
-// The process's peak resident memory so far, in MB. Linux's VmHWM first:
-// getrusage()'s ru_maxrss keeps the peak of the address space the process
-// had before exec(), so a tool started from a large parent (a Python
-// script holding 400 MB, through vfork) reported the parent's peak.
-inline double peak_rss_mb()
-{
-  std::ifstream status("/proc/self/status");
-  std::string line;
-  while(std::getline(status, line))
-    if(line.compare(0, 6, "VmHWM:") == 0)
-    {
-      std::istringstream kilobytes(line.substr(6));
-      double kb = 0;
-      if(kilobytes >> kb)
-        return kb / 1024.;
-    }
-  struct rusage usage;
-  if(::getrusage(RUSAGE_SELF, &usage) != 0)
-    return 0;
-  return double(usage.ru_maxrss) / 1024.;  // KB on Linux
-}
-
-} // namespace internal
 
 /// \ingroup PkgDiskSegmentationIO
 /// The packing and its pages as JSON: `efficiency`, `texels_per_unit`,
@@ -84,7 +59,8 @@ inline nlohmann::json packing_report_json(const CGAL::Disk_segmentation::Packing
 
 /// \ingroup PkgDiskSegmentationIO
 /// Everything an atlas report holds, as JSON: sizes, what reading changed,
-/// the stages' times, the process's peak memory and one entry per chart.
+/// the stages' times and one entry per chart. The process's peak memory,
+/// which the front ends report as `peak_rss_mb`, is theirs to measure and add.
 /// `input` names the mesh's source, `method` and `packer` the names the
 /// user gave, `read_seconds` the time reading took.
 inline nlohmann::json atlas_report_json(const std::string& input, std::size_t vertices,
@@ -131,7 +107,6 @@ inline nlohmann::json atlas_report_json(const std::string& input, std::size_t ve
     { "seconds", { { "read", read_seconds }, { "voronoi", r.voronoi_seconds }, { "refine", r.refine_seconds },
                    { "merge", r.merge_seconds }, { "parameterization", r.parameterization_seconds },
                    { "packing", r.packing_seconds }, { "total", r.total_seconds } } },
-    { "peak_rss_mb", internal::peak_rss_mb() },
     { "charts", charts } };
 }
 
