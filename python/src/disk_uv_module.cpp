@@ -588,13 +588,9 @@ py::tuple run_atlas_of_meshes(const py::sequence& parts, const py::dict& o)
   {
     DS::IO::Read_changes changes;
     changes.pinched_vertices_split = soups[i].pinched_vertices_split;
-    nlohmann::json json = DS::IO::atlas_report_json("<arrays>", meshes[i].number_of_vertices(), report.meshes[i],
-                                                     method_name, packer_name, 0., changes);
-    // The pages of this mesh's charts only (the common packing is returned
-    // once): with every chart's page in every report, many meshes cost
-    // their square.
-    json["packing"] = DS::IO::packing_report_json(report.packing, report.first_chart[i], report.first_chart[i + 1]);
-    json["first_chart"] = report.first_chart[i];
+    // The pages of this mesh's charts only: the common packing is returned once.
+    nlohmann::json json = DS::IO::mesh_in_atlas_report_json("<arrays>", meshes[i].number_of_vertices(), report, i,
+                                                             method_name, packer_name, changes);
     json["total_charts"] = report.first_chart.back();
     json["peak_rss_mb"] = peak_rss_mb();
     results.append(atlas_result(soups[i], meshes[i], patches[i], uvs[i], json.dump()));

@@ -348,22 +348,10 @@ void combine(const Several_atlas& s, Mesh& all, Patch_map& patch, UV_map& uv)
 
 nlohmann::json several_report_json(const Several_atlas& s, const std::string& method, const std::string& packer)
 {
-  nlohmann::json meshes = nlohmann::json::array();
-  for(std::size_t i = 0; i < s.meshes.size(); ++i)
-  {
-    nlohmann::json mesh = DS_IO::atlas_report_json(s.inputs[i], s.meshes[i].number_of_vertices(),
-                                                     s.report.meshes[i], method, packer, 0., s.changes[i]);
-    // The pages of its own charts: the common packing is written once, below.
-    mesh["packing"] =
-      DS_IO::packing_report_json(s.report.packing, s.report.first_chart[i], s.report.first_chart[i + 1]);
-    mesh["first_chart"] = s.report.first_chart[i];
-    meshes.push_back(std::move(mesh));
-  }
-  return { { "inputs", meshes },
-           { "charts", s.report.first_chart.back() },
-           { "packing", DS_IO::packing_report_json(s.report.packing) },
-           { "seconds", { { "read", s.read_seconds }, { "packing", s.report.packing_seconds },
-                          { "total", s.report.total_seconds } } } };
+  std::vector<std::size_t> vertices;
+  for(const Mesh& m : s.meshes)
+    vertices.push_back(m.number_of_vertices());
+  return DS_IO::atlas_of_meshes_report_json(s.inputs, vertices, s.report, method, packer, s.read_seconds, s.changes);
 }
 
 void print_several_summary(const Several_atlas& s)

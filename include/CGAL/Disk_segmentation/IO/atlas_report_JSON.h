@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 
 // The JSON report of an atlas (nlohmann-json), as disk_uv --report and the
-// Python module's Atlas.report write it. Only what the library computed:
+// Python module's Atlas.report write it, for one mesh or several in one
+// atlas. Only what the library computed:
 // a measure of the process (its peak memory) is the caller's to add.
 
 #ifndef CGAL_DISK_SEGMENTATION_IO_ATLAS_REPORT_JSON_H
@@ -10,6 +11,7 @@
 
 #include <CGAL/Disk_segmentation/Atlas_report.h>
 #include <CGAL/Disk_segmentation/IO/Read_options.h>
+#include <CGAL/Disk_segmentation/Multi_mesh_atlas_report.h>
 #include <CGAL/Disk_segmentation/Packing_report.h>
 #include <CGAL/Disk_segmentation/Parameterization_method.h>
 
@@ -108,6 +110,52 @@ inline nlohmann::json atlas_report_json(const std::string& input, std::size_t ve
                    { "merge", r.merge_seconds }, { "parameterization", r.parameterization_seconds },
                    { "packing", r.packing_seconds }, { "total", r.total_seconds } } },
     { "charts", charts } };
+}
+
+/// \ingroup PkgDiskSegmentationIO
+/// The report of mesh `i` of several packed together (`uv_atlas_of_meshes()`)
+/// as JSON: `atlas_report_json()` of its own report, whose `packing` holds the
+/// pages of its charts only (`packing_report_json()` with its charts), and
+/// `first_chart`, the id of its first chart. `input` names the mesh's source.
+///
+/// \pre `i < r.meshes.size()` and `r.first_chart` has `r.meshes.size() + 1` entries.
+inline nlohmann::json mesh_in_atlas_report_json(const std::string& input, std::size_t vertices,
+                                                const CGAL::Disk_segmentation::Multi_mesh_atlas_report& r,
+                                                std::size_t i, const std::string& method, const std::string& packer,
+                                                const Read_changes& changes)
+{
+  // Read time is the caller's for all meshes together, not per mesh.
+  nlohmann::json mesh = atlas_report_json(input, vertices, r.meshes[i], method, packer, 0., changes);
+  // The common packing is reported once, beside the meshes: repeated in
+  // every mesh's report it made the reports of many meshes quadratic.
+  mesh["packing"] = packing_report_json(r.packing, r.first_chart[i], r.first_chart[i + 1]);
+  mesh["first_chart"] = r.first_chart[i];
+  return mesh;
+}
+
+/// \ingroup PkgDiskSegmentationIO
+/// The report of several meshes in one atlas (`uv_atlas_of_meshes()`) as
+/// JSON: `inputs`, the report of each mesh (`mesh_in_atlas_report_json()`),
+/// `charts`, the number of charts of all meshes, `packing`, the common
+/// packing, and `seconds` (`read`, `packing`, `total`). `inputs`,
+/// `vertices` and `changes` give each mesh's source, number of vertices
+/// and what reading changed; `read_seconds` is the time reading all took.
+///
+/// \pre `inputs`, `vertices` and `changes` have one entry per mesh of `r`.
+inline nlohmann::json atlas_of_meshes_report_json(const std::vector<std::string>& inputs,
+                                                  const std::vector<std::size_t>& vertices,
+                                                  const CGAL::Disk_segmentation::Multi_mesh_atlas_report& r,
+                                                  const std::string& method, const std::string& packer,
+                                                  double read_seconds, const std::vector<Read_changes>& changes)
+{
+  nlohmann::json meshes = nlohmann::json::array();
+  for(std::size_t i = 0; i < r.meshes.size(); ++i)
+    meshes.push_back(mesh_in_atlas_report_json(inputs[i], vertices[i], r, i, method, packer, changes[i]));
+  return { { "inputs", meshes },
+           { "charts", r.first_chart.back() },
+           { "packing", packing_report_json(r.packing) },
+           { "seconds", { { "read", read_seconds }, { "packing", r.packing_seconds },
+                          { "total", r.total_seconds } } } };
 }
 
 } // namespace IO
