@@ -17,6 +17,7 @@
 
 #include <CGAL/Disk_segmentation/IO/Atlas_options.h>
 #include <CGAL/Disk_segmentation/IO/atlas_report_JSON.h>
+#include <CGAL/Disk_segmentation/IO/packing_warnings.h>
 #include <CGAL/Disk_segmentation/IO/internal/Float_texcoords.h>
 #include <CGAL/Disk_segmentation/IO/read_triangle_mesh.h>
 
@@ -777,6 +778,21 @@ PYBIND11_MODULE(_disk_uv, m)
   m.def("atlas", &run_atlas, py::arg("vertices"), py::arg("faces"), py::arg("options"));
   m.def("atlas_of_meshes", &run_atlas_of_meshes, py::arg("meshes"), py::arg("options"));
   m.def("check_atlas_options", &check_atlas_options, py::arg("options"));
+  // The packing warnings in the tool's wording, with Python's names; "" when there is none.
+  m.def("sparse_packing_warning",
+        [](double efficiency, std::size_t pages, std::size_t charts, const std::string& resolution, double padding,
+           double texels_per_unit) {
+          return DS::IO::sparse_packing_warning(efficiency, pages, charts, resolution, padding, texels_per_unit,
+                                                DS::IO::Front_end::python);
+        },
+        py::arg("efficiency"), py::arg("pages"), py::arg("charts"), py::arg("resolution"), py::arg("padding"),
+        py::arg("texels_per_unit"));
+  m.def("charts_below_a_texel_warning",
+        [](std::size_t tiny, std::size_t charts, const std::string& resolution, double texels_per_unit) {
+          return DS::IO::charts_below_a_texel_warning(tiny, charts, resolution, texels_per_unit,
+                                                      DS::IO::Front_end::python);
+        },
+        py::arg("tiny"), py::arg("charts"), py::arg("resolution"), py::arg("texels_per_unit"));
   m.def("segment", &run_segment, py::arg("vertices"), py::arg("faces"), py::arg("options"));
   m.def("xatlas_arrays", &xatlas_arrays, py::arg("faces"), py::arg("uvs"), py::arg("chart_ids"));
   // "N" -> N, "WxH" -> (W, H), anything else -> None: the tool's --resolution.

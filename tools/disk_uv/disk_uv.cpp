@@ -26,6 +26,7 @@
 
 #include <CGAL/Disk_segmentation/IO/Atlas_options.h>
 #include <CGAL/Disk_segmentation/IO/atlas_report_JSON.h>
+#include <CGAL/Disk_segmentation/IO/packing_warnings.h>
 #include <CGAL/Disk_segmentation/IO/read_triangle_mesh.h>
 #include <CGAL/Disk_segmentation/IO/udim_tiles.h>
 #include <CGAL/Disk_segmentation/IO/write_atlas_GLB.h>
@@ -145,31 +146,16 @@ std::vector<std::int64_t> read_material_ids(const std::string& path, std::size_t
   return ids;
 }
 
-// Below this share of the texture, the padding takes most of it: said
-// rather than left for the user to find in the picture.
-constexpr double low_packing_efficiency = 0.25;
-
+// A packing that wastes its texture is said rather than left for the user
+// to find in the picture; the wording is the library's, as for Python.
 void warn_if_sparse(const DS::Packing_report& packing, std::size_t charts, const std::string& resolution,
                     double padding, double texels_per_unit)
 {
-  if(!(packing.efficiency < low_packing_efficiency))
-    return;
-  if(texels_per_unit > 0)
-  {
-    // The density was asked for: what is left empty is the last page's room.
-    const std::string pages =
-      packing.number_of_pages == 1 ? "the page" : "the " + std::to_string(packing.number_of_pages) + " pages";
-    std::fprintf(stderr,
-                 "disk_uv: warning: the charts cover only %.1f%% of %s on the mean at --texels-per-unit %g (a page "
-                 "of --resolution %s texels holds more: lower --resolution or raise --texels-per-unit)\n",
-                 100 * packing.efficiency, pages.c_str(), texels_per_unit, resolution.c_str());
-    return;
-  }
-  std::fprintf(stderr,
-               "disk_uv: warning: the charts cover only %.1f%% of the texture: at --resolution %s, --padding %g "
-               "texels around each of %zu charts takes the rest (raise --resolution, lower --padding or set "
-               "--max-charts)\n",
-               100 * packing.efficiency, resolution.c_str(), padding, charts);
+  const std::string warning = DS_IO::sparse_packing_warning(packing.efficiency, packing.number_of_pages, charts,
+                                                            resolution, padding, texels_per_unit,
+                                                            DS_IO::Front_end::command_line);
+  if(!warning.empty())
+    std::fprintf(stderr, "disk_uv: warning: %s\n", warning.c_str());
 }
 
 // Charts below a texel hold no texel of their own: said, as the user may
@@ -177,14 +163,11 @@ void warn_if_sparse(const DS::Packing_report& packing, std::size_t charts, const
 void warn_of_charts_below_a_texel(const DS::Packing_report& packing, const std::string& resolution,
                                   double texels_per_unit)
 {
-  const std::size_t tiny = packing.number_of_charts_below_a_texel;
-  if(tiny == 0)
-    return;
-  std::fprintf(stderr,
-               "disk_uv: warning: %zu of %zu charts are smaller than one texel of a --resolution %s texture%s: "
-               "they get no texel of their own\n",
-               tiny, packing.number_of_charts, resolution.c_str(),
-               texels_per_unit > 0 ? " at this --texels-per-unit" : "");
+  const std::string warning =
+    DS_IO::charts_below_a_texel_warning(packing.number_of_charts_below_a_texel, packing.number_of_charts, resolution,
+                                        texels_per_unit, DS_IO::Front_end::command_line);
+  if(!warning.empty())
+    std::fprintf(stderr, "disk_uv: warning: %s\n", warning.c_str());
 }
 
 // `path` split before the extension of its file name: "out/atlas.png" ->
