@@ -106,28 +106,20 @@ class Atlas:
             len(self.chart_ids), self.number_of_charts, 100 * self.report["packing"]["efficiency"], pages)
 
 
-# Below this share of the texture, the padding takes most of it (as the disk_uv tool warns).
-_LOW_PACKING_EFFICIENCY = 0.25
-
-
-def _warn_if_sparse(efficiency, charts, resolution, padding, texels_per_unit):
-    if efficiency < _LOW_PACKING_EFFICIENCY and texels_per_unit:
-        warnings.warn("the charts cover only %.1f%% of their pages on the mean at texels_per_unit=%g (a page of "
-                      "resolution=%s texels holds more: lower resolution or raise texels_per_unit)"
-                      % (100 * efficiency, texels_per_unit, resolution), RuntimeWarning, stacklevel=3)
-    elif efficiency < _LOW_PACKING_EFFICIENCY:
-        warnings.warn("the charts cover only %.1f%% of the texture: at resolution=%s, padding=%g texels around "
-                      "each of %d charts takes the rest (raise resolution, lower padding or set max_charts)"
-                      % (100 * efficiency, resolution, padding, charts), RuntimeWarning, stacklevel=3)
+# The wording and the threshold are the library's (IO/packing_warnings.h), as for the disk_uv tool.
+def _warn_if_sparse(packing, charts, resolution, padding, texels_per_unit):
+    message = _disk_uv.sparse_packing_warning(packing["efficiency"], packing["pages"], charts, str(resolution),
+                                              padding, texels_per_unit or 0)
+    if message:
+        warnings.warn(message, RuntimeWarning, stacklevel=3)
 
 
 def _warn_of_charts_below_a_texel(packing, resolution, texels_per_unit):
-    tiny = packing.get("charts_below_a_texel", 0)
-    if tiny:
-        warnings.warn("%d of %d charts are smaller than one texel of a resolution=%s texture%s: they get no texel "
-                      "of their own" % (tiny, len(packing["page_of_chart"]), resolution,
-                                        " at this texels_per_unit" if texels_per_unit else ""),
-                      RuntimeWarning, stacklevel=3)
+    message = _disk_uv.charts_below_a_texel_warning(packing.get("charts_below_a_texel", 0),
+                                                    len(packing["page_of_chart"]), str(resolution),
+                                                    texels_per_unit or 0)
+    if message:
+        warnings.warn(message, RuntimeWarning, stacklevel=3)
 
 
 def _looks_like_meshes(vertices):
@@ -270,8 +262,7 @@ def atlas(vertices, faces=None, method=_disk_uv.default_parameterization_method,
             report["packing"]["page_efficiency"] = page_efficiency
             atlases.append(Atlas(v, f, r["uvs"], r["chart_ids"], report))
         if atlases:
-            _warn_if_sparse(atlases[0].report["packing"]["efficiency"], atlases[0].report["total_charts"],
-                            resolution, padding, texels_per_unit)
+            _warn_if_sparse(common, atlases[0].report["total_charts"], resolution, padding, texels_per_unit)
             _warn_of_charts_below_a_texel(common, resolution, texels_per_unit)
             if max_charts is not None and atlases[0].report["total_charts"] > max_charts:
                 warnings.warn("%d charts in all: max_charts=%d is a budget for each of the %d meshes, not for the "
@@ -280,8 +271,7 @@ def atlas(vertices, faces=None, method=_disk_uv.default_parameterization_method,
         return atlases
     result = _disk_uv.atlas(vertices, faces, options)
     atlas = Atlas(vertices, faces, result["uvs"], result["chart_ids"], json.loads(result["report"]))
-    _warn_if_sparse(atlas.report["packing"]["efficiency"], atlas.number_of_charts, resolution, padding,
-                    texels_per_unit)
+    _warn_if_sparse(atlas.report["packing"], atlas.number_of_charts, resolution, padding, texels_per_unit)
     _warn_of_charts_below_a_texel(atlas.report["packing"], resolution, texels_per_unit)
     return atlas
 

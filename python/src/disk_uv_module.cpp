@@ -17,6 +17,7 @@
 
 #include <CGAL/Disk_segmentation/IO/Atlas_options.h>
 #include <CGAL/Disk_segmentation/IO/atlas_report_JSON.h>
+#include <CGAL/Disk_segmentation/IO/packing_warnings.h>
 #include <CGAL/Disk_segmentation/IO/internal/Float_texcoords.h>
 #include <CGAL/Disk_segmentation/IO/read_triangle_mesh.h>
 
@@ -27,6 +28,7 @@
 #include <condition_variable>
 #include <cstdint>
 #include <exception>
+#include <fstream>
 #include <functional>
 #include <mutex>
 #include <thread>
@@ -36,6 +38,8 @@
 #include <string>
 #include <unordered_map>
 #include <vector>
+
+#include <sys/resource.h>
 
 namespace py = pybind11;
 namespace DS = CGAL::Disk_segmentation;
@@ -283,6 +287,28 @@ void for_each_corner(const Mesh& mesh, const Soup& soup, std::size_t f, const Vi
         visit(h, j);
 }
 
+// The process's peak resident memory so far, in MB, that Atlas.report gives
+// as peak_rss_mb: a measure of this process, which the library's report
+// leaves to its caller. Linux's VmHWM first (getrusage()'s ru_maxrss may
+// hold the peak of a parent's address space from before exec()).
+double peak_rss_mb()
+{
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while(std::getline(status, line))
+    if(line.compare(0, 6, "VmHWM:") == 0)
+    {
+      std::istringstream kilobytes(line.substr(6));
+      double kb = 0;
+      if(kilobytes >> kb)
+        return kb / 1024.;
+    }
+  struct rusage usage;
+  if(::getrusage(RUSAGE_SELF, &usage) != 0)
+    return 0;
+  return double(usage.ru_maxrss) / 1024.;  // KB on Linux
+}
+
 // Per-corner UVs and chart ids in the soup's face and corner order.
 py::dict atlas_result(const Soup& soup, const Mesh& mesh, const Patch_map& patch, const UV_map& uv,
                       const std::string& report)
@@ -497,6 +523,7 @@ py::dict run_atlas(const py::handle& vertices, const py::handle& faces, const py
   changes.pinched_vertices_split = soup.pinched_vertices_split;
   nlohmann::json json =
     DS::IO::atlas_report_json("<arrays>", mesh.number_of_vertices(), report, method_name, packer_name, 0., changes);
+  json["peak_rss_mb"] = peak_rss_mb();
   return atlas_result(soup, mesh, patch, uv, json.dump());
 }
 
@@ -562,14 +589,11 @@ py::tuple run_atlas_of_meshes(const py::sequence& parts, const py::dict& o)
   {
     DS::IO::Read_changes changes;
     changes.pinched_vertices_split = soups[i].pinched_vertices_split;
-    nlohmann::json json = DS::IO::atlas_report_json("<arrays>", meshes[i].number_of_vertices(), report.meshes[i],
-                                                     method_name, packer_name, 0., changes);
-    // The pages of this mesh's charts only (the common packing is returned
-    // once): with every chart's page in every report, many meshes cost
-    // their square.
-    json["packing"] = DS::IO::packing_report_json(report.packing, report.first_chart[i], report.first_chart[i + 1]);
-    json["first_chart"] = report.first_chart[i];
+    // The pages of this mesh's charts only: the common packing is returned once.
+    nlohmann::json json = DS::IO::mesh_in_atlas_report_json("<arrays>", meshes[i].number_of_vertices(), report, i,
+                                                             method_name, packer_name, changes);
     json["total_charts"] = report.first_chart.back();
+    json["peak_rss_mb"] = peak_rss_mb();
     results.append(atlas_result(soups[i], meshes[i], patches[i], uvs[i], json.dump()));
   }
   return py::make_tuple(results, DS::IO::packing_report_json(report.packing).dump());
@@ -754,6 +778,21 @@ PYBIND11_MODULE(_disk_uv, m)
   m.def("atlas", &run_atlas, py::arg("vertices"), py::arg("faces"), py::arg("options"));
   m.def("atlas_of_meshes", &run_atlas_of_meshes, py::arg("meshes"), py::arg("options"));
   m.def("check_atlas_options", &check_atlas_options, py::arg("options"));
+  // The packing warnings in the tool's wording, with Python's names; "" when there is none.
+  m.def("sparse_packing_warning",
+        [](double efficiency, std::size_t pages, std::size_t charts, const std::string& resolution, double padding,
+           double texels_per_unit) {
+          return DS::IO::sparse_packing_warning(efficiency, pages, charts, resolution, padding, texels_per_unit,
+                                                DS::IO::Front_end::python);
+        },
+        py::arg("efficiency"), py::arg("pages"), py::arg("charts"), py::arg("resolution"), py::arg("padding"),
+        py::arg("texels_per_unit"));
+  m.def("charts_below_a_texel_warning",
+        [](std::size_t tiny, std::size_t charts, const std::string& resolution, double texels_per_unit) {
+          return DS::IO::charts_below_a_texel_warning(tiny, charts, resolution, texels_per_unit,
+                                                      DS::IO::Front_end::python);
+        },
+        py::arg("tiny"), py::arg("charts"), py::arg("resolution"), py::arg("texels_per_unit"));
   m.def("segment", &run_segment, py::arg("vertices"), py::arg("faces"), py::arg("options"));
   m.def("xatlas_arrays", &xatlas_arrays, py::arg("faces"), py::arg("uvs"), py::arg("chart_ids"));
   // "N" -> N, "WxH" -> (W, H), anything else -> None: the tool's --resolution.

@@ -12,7 +12,8 @@ describes ("How the Package Is Built"; "Building, Installing and Testing"):
   - every package header a header includes is in the tree, and every
     header of the tree is reachable from the umbrella header
     or from IO/;
-  - no CMake file puts examples/ on an include path.
+  - no CMake file puts examples/ or tools/ on an include path: the
+    package's headers stand on their own.
 
 Usage: check_include_layers.py SOURCE_DIR
 """
@@ -134,8 +135,9 @@ def main():
                 path = os.path.join(root, name)
                 with open(path, encoding="utf-8") as f:
                     for n, line in enumerate(f, 1):
-                        if "include_directories" in line and "examples" in line:
-                            problems.append(f"{os.path.relpath(path, source)}:{n} puts examples/ on an include path")
+                        for folder in ("examples", "tools"):
+                            if "include_directories" in line and folder in line:
+                                problems.append(f"{os.path.relpath(path, source)}:{n} puts {folder}/ on an include path")
 
     for p in problems:
         print("include layers:", p)

@@ -6,6 +6,7 @@
 
 #include <CGAL/disable_warnings.h>
 
+#include <CGAL/Disk_segmentation/Multi_mesh_atlas_report.h>
 #include <CGAL/Disk_segmentation/uv_atlas.h>
 
 #include <CGAL/boost/graph/copy_face_graph.h>
@@ -42,21 +43,6 @@ void reserve_for_copies(Copy& all, const MeshPointers& meshes)
 }
 
 } // namespace internal
-
-/// \ingroup PkgDiskSegmentationRef
-/// What `uv_atlas_of_meshes()` did.
-struct Multi_mesh_atlas_report
-{
-  /// Per mesh, in the order given: its segmentation and parameterization, as `uv_atlas()` reports
-  /// them for that mesh alone (its `packing` field is left empty).
-  std::vector<Atlas_report> meshes;
-  /// Per mesh, the id of its first chart: the charts of mesh `i` are numbered from
-  /// `first_chart[i]` to `first_chart[i + 1] - 1` (one more entry than meshes).
-  std::vector<std::size_t> first_chart;
-  /// The packing of all charts together.
-  Packing_report packing;
-  double packing_seconds = 0, total_seconds = 0;
-};
 
 /// \ingroup PkgDiskSegmentationRef
 ///

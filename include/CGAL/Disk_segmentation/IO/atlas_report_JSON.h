@@ -2,52 +2,29 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 
 // The JSON report of an atlas (nlohmann-json), as disk_uv --report and the
-// Python module's Atlas.report write it.
+// Python module's Atlas.report write it, for one mesh or several in one
+// atlas. Only what the library computed:
+// a measure of the process (its peak memory) is the caller's to add.
 
 #ifndef CGAL_DISK_SEGMENTATION_IO_ATLAS_REPORT_JSON_H
 #define CGAL_DISK_SEGMENTATION_IO_ATLAS_REPORT_JSON_H
 
-#include <CGAL/Disk_segmentation/IO/read_triangle_mesh.h>
+#include <CGAL/Disk_segmentation/Atlas_report.h>
+#include <CGAL/Disk_segmentation/IO/Read_options.h>
+#include <CGAL/Disk_segmentation/Multi_mesh_atlas_report.h>
+#include <CGAL/Disk_segmentation/Packing_report.h>
 #include <CGAL/Disk_segmentation/Parameterization_method.h>
-#include <CGAL/Disk_segmentation/uv_atlas.h>
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <fstream>
-#include <sstream>
+#include <cstddef>
 #include <string>
 #include <vector>
-#include <sys/resource.h>
 
 namespace CGAL {
 namespace Disk_segmentation {
 namespace IO {
-namespace internal {
-
-// The process's peak resident memory so far, in MB. Linux's VmHWM first:
-// getrusage()'s ru_maxrss keeps the peak of the address space the process
-// had before exec(), so a tool started from a large parent (a Python
-// script holding 400 MB, through vfork) reported the parent's peak.
-inline double peak_rss_mb()
-{
-  std::ifstream status("/proc/self/status");
-  std::string line;
-  while(std::getline(status, line))
-    if(line.compare(0, 6, "VmHWM:") == 0)
-    {
-      std::istringstream kilobytes(line.substr(6));
-      double kb = 0;
-      if(kilobytes >> kb)
-        return kb / 1024.;
-    }
-  struct rusage usage;
-  if(::getrusage(RUSAGE_SELF, &usage) != 0)
-    return 0;
-  return double(usage.ru_maxrss) / 1024.;  // KB on Linux
-}
-
-} // namespace internal
 
 /// \ingroup PkgDiskSegmentationIO
 /// The packing and its pages as JSON: `efficiency`, `texels_per_unit`,
@@ -84,7 +61,8 @@ inline nlohmann::json packing_report_json(const CGAL::Disk_segmentation::Packing
 
 /// \ingroup PkgDiskSegmentationIO
 /// Everything an atlas report holds, as JSON: sizes, what reading changed,
-/// the stages' times, the process's peak memory and one entry per chart.
+/// the stages' times and one entry per chart. The process's peak memory,
+/// which the front ends report as `peak_rss_mb`, is theirs to measure and add.
 /// `input` names the mesh's source, `method` and `packer` the names the
 /// user gave, `read_seconds` the time reading took.
 inline nlohmann::json atlas_report_json(const std::string& input, std::size_t vertices,
@@ -131,8 +109,53 @@ inline nlohmann::json atlas_report_json(const std::string& input, std::size_t ve
     { "seconds", { { "read", read_seconds }, { "voronoi", r.voronoi_seconds }, { "refine", r.refine_seconds },
                    { "merge", r.merge_seconds }, { "parameterization", r.parameterization_seconds },
                    { "packing", r.packing_seconds }, { "total", r.total_seconds } } },
-    { "peak_rss_mb", internal::peak_rss_mb() },
     { "charts", charts } };
+}
+
+/// \ingroup PkgDiskSegmentationIO
+/// The report of mesh `i` of several packed together (`uv_atlas_of_meshes()`)
+/// as JSON: `atlas_report_json()` of its own report, whose `packing` holds the
+/// pages of its charts only (`packing_report_json()` with its charts), and
+/// `first_chart`, the id of its first chart. `input` names the mesh's source.
+///
+/// \pre `i < r.meshes.size()` and `r.first_chart` has `r.meshes.size() + 1` entries.
+inline nlohmann::json mesh_in_atlas_report_json(const std::string& input, std::size_t vertices,
+                                                const CGAL::Disk_segmentation::Multi_mesh_atlas_report& r,
+                                                std::size_t i, const std::string& method, const std::string& packer,
+                                                const Read_changes& changes)
+{
+  // Read time is the caller's for all meshes together, not per mesh.
+  nlohmann::json mesh = atlas_report_json(input, vertices, r.meshes[i], method, packer, 0., changes);
+  // The common packing is reported once, beside the meshes: repeated in
+  // every mesh's report it made the reports of many meshes quadratic.
+  mesh["packing"] = packing_report_json(r.packing, r.first_chart[i], r.first_chart[i + 1]);
+  mesh["first_chart"] = r.first_chart[i];
+  return mesh;
+}
+
+/// \ingroup PkgDiskSegmentationIO
+/// The report of several meshes in one atlas (`uv_atlas_of_meshes()`) as
+/// JSON: `inputs`, the report of each mesh (`mesh_in_atlas_report_json()`),
+/// `charts`, the number of charts of all meshes, `packing`, the common
+/// packing, and `seconds` (`read`, `packing`, `total`). `inputs`,
+/// `vertices` and `changes` give each mesh's source, number of vertices
+/// and what reading changed; `read_seconds` is the time reading all took.
+///
+/// \pre `inputs`, `vertices` and `changes` have one entry per mesh of `r`.
+inline nlohmann::json atlas_of_meshes_report_json(const std::vector<std::string>& inputs,
+                                                  const std::vector<std::size_t>& vertices,
+                                                  const CGAL::Disk_segmentation::Multi_mesh_atlas_report& r,
+                                                  const std::string& method, const std::string& packer,
+                                                  double read_seconds, const std::vector<Read_changes>& changes)
+{
+  nlohmann::json meshes = nlohmann::json::array();
+  for(std::size_t i = 0; i < r.meshes.size(); ++i)
+    meshes.push_back(mesh_in_atlas_report_json(inputs[i], vertices[i], r, i, method, packer, changes[i]));
+  return { { "inputs", meshes },
+           { "charts", r.first_chart.back() },
+           { "packing", packing_report_json(r.packing) },
+           { "seconds", { { "read", read_seconds }, { "packing", r.packing_seconds },
+                          { "total", r.total_seconds } } } };
 }
 
 } // namespace IO

@@ -26,12 +26,14 @@
 
 #include <CGAL/Disk_segmentation/IO/Atlas_options.h>
 #include <CGAL/Disk_segmentation/IO/atlas_report_JSON.h>
+#include <CGAL/Disk_segmentation/IO/packing_warnings.h>
 #include <CGAL/Disk_segmentation/IO/read_triangle_mesh.h>
 #include <CGAL/Disk_segmentation/IO/udim_tiles.h>
 #include <CGAL/Disk_segmentation/IO/write_atlas_GLB.h>
 #include <CGAL/Disk_segmentation/IO/write_atlas_OBJ.h>
 #include <CGAL/Disk_segmentation/IO/write_atlas_PNG.h>
 #include "output_files.h"
+#include "peak_memory.h"
 #include "stop_signals.h"
 
 #include <CGAL/Disk_segmentation.h>
@@ -144,31 +146,16 @@ std::vector<std::int64_t> read_material_ids(const std::string& path, std::size_t
   return ids;
 }
 
-// Below this share of the texture, the padding takes most of it: said
-// rather than left for the user to find in the picture.
-constexpr double low_packing_efficiency = 0.25;
-
+// A packing that wastes its texture is said rather than left for the user
+// to find in the picture; the wording is the library's, as for Python.
 void warn_if_sparse(const DS::Packing_report& packing, std::size_t charts, const std::string& resolution,
                     double padding, double texels_per_unit)
 {
-  if(!(packing.efficiency < low_packing_efficiency))
-    return;
-  if(texels_per_unit > 0)
-  {
-    // The density was asked for: what is left empty is the last page's room.
-    const std::string pages =
-      packing.number_of_pages == 1 ? "the page" : "the " + std::to_string(packing.number_of_pages) + " pages";
-    std::fprintf(stderr,
-                 "disk_uv: warning: the charts cover only %.1f%% of %s on the mean at --texels-per-unit %g (a page "
-                 "of --resolution %s texels holds more: lower --resolution or raise --texels-per-unit)\n",
-                 100 * packing.efficiency, pages.c_str(), texels_per_unit, resolution.c_str());
-    return;
-  }
-  std::fprintf(stderr,
-               "disk_uv: warning: the charts cover only %.1f%% of the texture: at --resolution %s, --padding %g "
-               "texels around each of %zu charts takes the rest (raise --resolution, lower --padding or set "
-               "--max-charts)\n",
-               100 * packing.efficiency, resolution.c_str(), padding, charts);
+  const std::string warning = DS_IO::sparse_packing_warning(packing.efficiency, packing.number_of_pages, charts,
+                                                            resolution, padding, texels_per_unit,
+                                                            DS_IO::Front_end::command_line);
+  if(!warning.empty())
+    std::fprintf(stderr, "disk_uv: warning: %s\n", warning.c_str());
 }
 
 // Charts below a texel hold no texel of their own: said, as the user may
@@ -176,14 +163,11 @@ void warn_if_sparse(const DS::Packing_report& packing, std::size_t charts, const
 void warn_of_charts_below_a_texel(const DS::Packing_report& packing, const std::string& resolution,
                                   double texels_per_unit)
 {
-  const std::size_t tiny = packing.number_of_charts_below_a_texel;
-  if(tiny == 0)
-    return;
-  std::fprintf(stderr,
-               "disk_uv: warning: %zu of %zu charts are smaller than one texel of a --resolution %s texture%s: "
-               "they get no texel of their own\n",
-               tiny, packing.number_of_charts, resolution.c_str(),
-               texels_per_unit > 0 ? " at this --texels-per-unit" : "");
+  const std::string warning =
+    DS_IO::charts_below_a_texel_warning(packing.number_of_charts_below_a_texel, packing.number_of_charts, resolution,
+                                        texels_per_unit, DS_IO::Front_end::command_line);
+  if(!warning.empty())
+    std::fprintf(stderr, "disk_uv: warning: %s\n", warning.c_str());
 }
 
 // `path` split before the extension of its file name: "out/atlas.png" ->
@@ -347,23 +331,10 @@ void combine(const Several_atlas& s, Mesh& all, Patch_map& patch, UV_map& uv)
 
 nlohmann::json several_report_json(const Several_atlas& s, const std::string& method, const std::string& packer)
 {
-  nlohmann::json meshes = nlohmann::json::array();
-  for(std::size_t i = 0; i < s.meshes.size(); ++i)
-  {
-    nlohmann::json mesh = DS_IO::atlas_report_json(s.inputs[i], s.meshes[i].number_of_vertices(),
-                                                     s.report.meshes[i], method, packer, 0., s.changes[i]);
-    // The pages of its own charts: the common packing is written once, below.
-    mesh["packing"] =
-      DS_IO::packing_report_json(s.report.packing, s.report.first_chart[i], s.report.first_chart[i + 1]);
-    mesh["first_chart"] = s.report.first_chart[i];
-    meshes.push_back(std::move(mesh));
-  }
-  return { { "inputs", meshes },
-           { "charts", s.report.first_chart.back() },
-           { "packing", DS_IO::packing_report_json(s.report.packing) },
-           { "seconds", { { "read", s.read_seconds }, { "packing", s.report.packing_seconds },
-                          { "total", s.report.total_seconds } } },
-           { "peak_rss_mb", DS_IO::internal::peak_rss_mb() } };
+  std::vector<std::size_t> vertices;
+  for(const Mesh& m : s.meshes)
+    vertices.push_back(m.number_of_vertices());
+  return DS_IO::atlas_of_meshes_report_json(s.inputs, vertices, s.report, method, packer, s.read_seconds, s.changes);
 }
 
 void print_several_summary(const Several_atlas& s)
@@ -604,6 +575,8 @@ struct Atlas_outputs
                               : DS_IO::atlas_report_json(line.inputs.front(), mesh.number_of_vertices(), *report,
                                                            line.options.method, line.options.packer, read_seconds,
                                                            *changes);
+      // The process's measure, which the library's report leaves out.
+      json["peak_rss_mb"] = disk_uv::peak_rss_mb();
       // Several pages: the written UVs hold them as UDIM tiles.
       json["packing"]["udim_tiles"] = json["packing"]["pages"].get<std::size_t>() > 1;
       o << json.dump(2) << '\n';
