@@ -286,7 +286,7 @@ private:
         // Any valid map will do: the fallbacks are tried, ARAP runs to the end.
         outcome = choice_.solve(u, On_invalid_map::redo, nullptr, from);
         round.accepted[i] = outcome.valid ? 1 : 0;
-        if(round.accepted[i] && !rule_.bound.is_unbounded())
+        if(round.accepted[i] && !rule_.test().bounds_nothing())
           round.union_excess[i] = rule_.excess(u);
         return;
       }

@@ -20,6 +20,7 @@
 #include <CGAL/Disk_segmentation/internal/Mesh/Face_partition.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Indexed_triangle_mesh.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Region_topology.h>
+#include <CGAL/Disk_segmentation/internal/Parameterization/Bound_test.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Chart_distortion.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Chart_parameterization.h>
 #include <CGAL/Disk_segmentation/internal/Parameters/Parameterization_settings.h>
@@ -319,7 +320,7 @@ Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, con
                                 settings.require_disks);
 
   const Border_smoother smoother(m);
-  const bool bounded = !settings.bound.is_unbounded();
+  const bool bounded = !Bound_test(settings.bound).bounds_nothing();
   std::unique_ptr<Interior_curvature> curvature;
   if(bounded)
     curvature.reset(new Interior_curvature(m));
