@@ -1,5 +1,8 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Merges adjacent kept charts whose union is a disk and still meets the
+// bound, by the merge score of the segmentation.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_CHART_SELECTION_CHART_MERGING_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_CHART_SELECTION_CHART_MERGING_H

@@ -1,5 +1,8 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Reroutes the borders between kept charts (Border_router) and
+// parameterizes the changed charts again, giving back what breaks them.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_CHART_SELECTION_CHART_REROUTING_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_CHART_SELECTION_CHART_REROUTING_H

@@ -1,5 +1,8 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Splits a chart that breaks the bound into Voronoi pieces, reusing its
+// parent's UVs; Split_rule says which charts are split.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_CHART_SELECTION_CHART_SPLITTING_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_CHART_SELECTION_CHART_SPLITTING_H

@@ -1,5 +1,8 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// parameterize_patches() on the indexed mesh: the patches, the descent,
+// splits, merges and reroutes of charts, and the report.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_CHART_SELECTION_PATCH_PARAMETERIZATION_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_CHART_SELECTION_PATCH_PARAMETERIZATION_H

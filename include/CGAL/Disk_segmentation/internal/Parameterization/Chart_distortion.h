@@ -1,5 +1,8 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The distortion of one chart under a map: area-weighted means and
+// extremes of its triangles' singular values.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_PARAMETERIZATION_CHART_DISTORTION_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_PARAMETERIZATION_CHART_DISTORTION_H
