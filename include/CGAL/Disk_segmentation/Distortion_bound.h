@@ -70,13 +70,6 @@ struct Distortion_bound
   /// from the faces of a CAD part), which cost seams and packing.
   static constexpr double small_chart_convexity_ratio = 0.8;
 
-  /// The convexity a chart of `area_fraction` of the mesh's 3D area must
-  /// reach (0: none).
-  double min_convexity_of(double area_fraction) const
-  {
-    return area_fraction >= convexity_area_fraction ? min_convexity : small_chart_convexity_ratio * min_convexity;
-  }
-
   /// No bound: every valid chart is kept (the paper's behaviour).
   static Distortion_bound unbounded()
   {

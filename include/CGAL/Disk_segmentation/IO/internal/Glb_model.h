@@ -1,5 +1,8 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The arrays of the atlas's glTF primitive: positions, UVs, normals and
+// triangles, one vertex per distinct (vertex, UV) pair.
 
 #ifndef CGAL_DISK_SEGMENTATION_IO_INTERNAL_GLB_MODEL_H
 #define CGAL_DISK_SEGMENTATION_IO_INTERNAL_GLB_MODEL_H

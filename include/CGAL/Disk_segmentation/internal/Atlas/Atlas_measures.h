@@ -1,5 +1,8 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The measures of an atlas's quality: distortion statistics, texel
+// overlaps and seam length, per face and over the atlas.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_ATLAS_ATLAS_MEASURES_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_ATLAS_ATLAS_MEASURES_H

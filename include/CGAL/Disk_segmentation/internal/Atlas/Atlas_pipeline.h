@@ -1,5 +1,8 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// uv_atlas() up to the packing, shared with uv_atlas_of_meshes():
+// segmentation, merge tree and chart parameterization in one call.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_ATLAS_ATLAS_PIPELINE_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_ATLAS_ATLAS_PIPELINE_H

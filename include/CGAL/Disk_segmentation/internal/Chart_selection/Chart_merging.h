@@ -1,5 +1,8 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Merges adjacent kept charts whose union is a disk and still meets the
+// bound, by the merge score of the segmentation.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_CHART_SELECTION_CHART_MERGING_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_CHART_SELECTION_CHART_MERGING_H
@@ -286,7 +289,7 @@ private:
         // Any valid map will do: the fallbacks are tried, ARAP runs to the end.
         outcome = choice_.solve(u, On_invalid_map::redo, nullptr, from);
         round.accepted[i] = outcome.valid ? 1 : 0;
-        if(round.accepted[i] && !rule_.bound.is_unbounded())
+        if(round.accepted[i] && !rule_.test().bounds_nothing())
           round.union_excess[i] = rule_.excess(u);
         return;
       }

@@ -1,5 +1,8 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Reroutes the borders between kept charts (Border_router) and
+// parameterizes the changed charts again, giving back what breaks them.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_CHART_SELECTION_CHART_REROUTING_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_CHART_SELECTION_CHART_REROUTING_H
@@ -26,22 +29,7 @@ namespace internal {
 // that looks the same.
 constexpr double least_reroute_gain = 0.02;
 
-// How close a chart is to the bound: the largest of its mean distortions
-// over their bounds and of its p95 s1/s2 over its bound (both less one);
-// 1 at the bound.
-inline double bound_load(const Chart_distortion& d, const Distortion_bound& bound)
-{
-  double load = 0.;
-  if(std::isfinite(bound.max_angle_distortion))
-    load = (std::max)(load, d.angle / bound.max_angle_distortion);
-  if(std::isfinite(bound.max_area_distortion))
-    load = (std::max)(load, d.area / bound.max_area_distortion);
-  if(std::isfinite(bound.max_stretch_p95))
-    load = (std::max)(load, (d.stretch_p95 - 1.) / (bound.max_stretch_p95 - 1.));
-  return load;
-}
-
-// Arcs of a chart loaded above this are left as they are: such a chart
+// Arcs of a chart loaded (Bound_test::load) above this are left as they are: such a chart
 // almost always breaks the bound once its border moves, and each try costs
 // two parameterizations. Measured on the 23 shipped meshes (one run, two
 // meshes at a time): without the gate 384 of 1641 rerouted arcs kept, cut
@@ -66,7 +54,7 @@ std::vector<Arc_change> reroute_arcs(const Indexed_triangle_mesh& m, Region_topo
   std::vector<char> locked(m.number_of_faces(), 0);
   std::vector<Arc_change> changes;
   std::vector<double> load(n, 0.);
-  for_each(n, [&](std::size_t i) { load[i] = bound_load(chart_distortion(m, kept[i].chart), rule.bound); });
+  for_each(n, [&](std::size_t i) { load[i] = rule.test().load(chart_distortion(m, kept[i].chart)); });
   for(const Border_arc& arc : router.arcs(labels))
   {
     if(load[arc.a] > largest_reroute_load || load[arc.b] > largest_reroute_load)

@@ -1,5 +1,8 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Splits a chart that breaks the bound into Voronoi pieces, reusing its
+// parent's UVs; Split_rule says which charts are split.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_CHART_SELECTION_CHART_SPLITTING_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_CHART_SELECTION_CHART_SPLITTING_H
@@ -14,6 +17,7 @@
 #include <CGAL/Disk_segmentation/internal/Mesh/Indexed_triangle_mesh.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Region_slots.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Region_topology.h>
+#include <CGAL/Disk_segmentation/internal/Parameterization/Bound_test.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Chart_convexity.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Chart_distortion.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Chart_method_chain.h>
@@ -359,6 +363,9 @@ struct Split_rule
 
   bool too_large(std::size_t faces) const { return faces > max_chart_faces; }
 
+  // The bound's judge (see Bound_test): this rule reads no field of `bound`.
+  Bound_test test() const { return Bound_test(bound); }
+
   // Under a bound, an invalid chart is replaced like one over the bound,
   // without the other starts and fallback methods: a chart whose first
   // start folds is large or twisted, and redone from a circle it rarely
@@ -366,7 +373,7 @@ struct Split_rule
   // time, 0.8 % more charts.
   On_invalid_map on_invalid_map() const
   {
-    return use_fallback && !bound.is_unbounded() ? On_invalid_map::report : On_invalid_map::redo;
+    return use_fallback && !test().bounds_nothing() ? On_invalid_map::report : On_invalid_map::redo;
   }
 
   bool operator()(const Chart& c, const Chart_outcome& outcome,
@@ -387,7 +394,7 @@ struct Split_rule
     measured_excess = 0.;
     if(!outcome.valid)
       return use_fallback;
-    if(bound.is_unbounded())
+    if(test().bounds_nothing())
       return false;
     if(ended.verdict != Early_verdict::iterate_on)
     {
@@ -404,17 +411,17 @@ struct Split_rule
   // of an early ARAP iterate.
   bool breaks_bound(const Chart& c, const Chart_uv& uv, const Chart_distortion& d) const
   {
-    return !d.meets(bound) || too_concave(c, uv);
+    return !test().meets_distortion(d) || too_concave(c, uv);
   }
 
   bool too_concave(const Chart& c, const Chart_uv& uv, double margin = 1.) const
   {
-    if(!(bound.min_convexity > 0.))
+    if(!test().bounds_convexity())
       return false;
     double area = 0.;
     for(Index f : c.faces)
       area += m.common_area(f);
-    return chart_convexity(c, uv) < margin * bound.min_convexity_of(area / total_area);
+    return test().too_concave(chart_convexity(c, uv), area / total_area, margin);
   }
 
   // Whether the union of two parameterized charts is not worth
@@ -458,7 +465,7 @@ struct Split_rule
     j.measure = excess(d);
     if(j.measure <= early_accepted_excess && !breaks_bound(c, uv, d))
       j.verdict = Early_verdict::good_enough;
-    else if(j.measure * early_margin > 1. || (d.stretch_p95 - 1.) * early_margin > bound.max_stretch_p95 - 1.)
+    else if(j.measure * early_margin > 1. || test().p95_far_over(d, early_margin))
       j.verdict = Early_verdict::hopeless;
     return j;
   }
@@ -467,7 +474,7 @@ struct Split_rule
   // without the fallback (every chart is then kept as it comes).
   Arap_early_look early_look() const
   {
-    if(bound.is_unbounded())
+    if(test().bounds_nothing())
       return Arap_early_look();
     return [this](const Chart& c, const Chart_uv& uv) { return early_verdict(c, uv); };
   }
@@ -488,12 +495,7 @@ struct Split_rule
 
   // The larger of a chart's two mean distortions over their bounds (0 for
   // an infinite bound; above 1: over the bound).
-  double excess(const Chart_distortion& d) const
-  {
-    const double e = (std::max)(std::isfinite(bound.max_angle_distortion) ? d.angle / bound.max_angle_distortion : 0.,
-                                std::isfinite(bound.max_area_distortion) ? d.area / bound.max_area_distortion : 0.);
-    return std::isfinite(e) ? e : std::numeric_limits<double>::infinity();
-  }
+  double excess(const Chart_distortion& d) const { return test().mean_excess(d); }
 
   double excess(const Chart& c) const { return excess(chart_distortion(m, c)); }
 
@@ -541,12 +543,7 @@ struct Split_rule
   // at most 3.4.
   double curvature_limit() const
   {
-    const Distortion_bound defaults;
-    double looser = 0.;
-    if(std::isfinite(bound.max_angle_distortion))
-      looser = (std::max)(looser, bound.max_angle_distortion / defaults.max_angle_distortion);
-    if(std::isfinite(bound.max_area_distortion))
-      looser = (std::max)(looser, bound.max_area_distortion / defaults.max_area_distortion);
+    const double looser = test().looseness_of_means();
     return looser > 0. ? 4. * looser : std::numeric_limits<double>::infinity();
   }
 

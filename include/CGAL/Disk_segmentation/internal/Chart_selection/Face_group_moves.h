@@ -1,5 +1,8 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Moves faces between disk patches so that each group of faces (a
+// polygon of the caller's mesh) lies in one patch.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_CHART_SELECTION_FACE_GROUP_MOVES_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_CHART_SELECTION_FACE_GROUP_MOVES_H

@@ -1,5 +1,8 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The top-down choice of charts in the merge tree: the candidates to try
+// and the tasks of the descent.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_CHART_SELECTION_MERGE_TREE_DESCENT_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_CHART_SELECTION_MERGE_TREE_DESCENT_H

@@ -1,5 +1,8 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// parameterize_patches() on the indexed mesh: the patches, the descent,
+// splits, merges and reroutes of charts, and the report.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_CHART_SELECTION_PATCH_PARAMETERIZATION_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_CHART_SELECTION_PATCH_PARAMETERIZATION_H
@@ -20,6 +23,7 @@
 #include <CGAL/Disk_segmentation/internal/Mesh/Face_partition.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Indexed_triangle_mesh.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Region_topology.h>
+#include <CGAL/Disk_segmentation/internal/Parameterization/Bound_test.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Chart_distortion.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Chart_parameterization.h>
 #include <CGAL/Disk_segmentation/internal/Chart_selection/Parameterization_settings.h>
@@ -319,7 +323,7 @@ Parameterization_report parameterize_indexed_patches(const TriangleMesh& tm, con
                                 settings.require_disks);
 
   const Border_smoother smoother(m);
-  const bool bounded = !settings.bound.is_unbounded();
+  const bool bounded = !Bound_test(settings.bound).bounds_nothing();
   std::unique_ptr<Interior_curvature> curvature;
   if(bounded)
     curvature.reset(new Interior_curvature(m));

@@ -1,5 +1,8 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Progress reports to the user's callback, one at a time from several
+// threads, and the cancellation it may ask for.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_EXECUTION_PROGRESS_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_EXECUTION_PROGRESS_H

@@ -1,5 +1,8 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The package's parallel loops: on TBB with a bound on the threads, or
+// serial without TBB.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_EXECUTION_PARALLEL_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_EXECUTION_PARALLEL_H

@@ -1,5 +1,8 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Face labels as a partition: the faces of each label, and the canonical
+// numbering of the labels (by smallest face).
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_MESH_FACE_PARTITION_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_MESH_FACE_PARTITION_H

@@ -1,5 +1,8 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Counts the topology of a range of faces of a FaceGraph, indexing only
+// those faces.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_MESH_FACE_RANGE_TOPOLOGY_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_MESH_FACE_RANGE_TOPOLOGY_H

@@ -1,5 +1,8 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Local numbering of the faces or vertices a region meets, in memory
+// proportional to the region: thread scratch that never grows to the mesh.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_MESH_REGION_SLOTS_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_MESH_REGION_SLOTS_H

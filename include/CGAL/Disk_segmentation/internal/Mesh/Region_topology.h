@@ -1,5 +1,8 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The topology of a region of the indexed mesh, and whether it is a disk,
+// in time and memory proportional to the region.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_MESH_REGION_TOPOLOGY_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_MESH_REGION_TOPOLOGY_H

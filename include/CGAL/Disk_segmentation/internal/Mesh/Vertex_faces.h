@@ -1,5 +1,7 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The faces around every vertex of the indexed mesh, in one array.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_MESH_VERTEX_FACES_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_MESH_VERTEX_FACES_H

@@ -1,5 +1,8 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The layouts packing tries: the grid of cells of the raster packer, the
+// scale of the charts, and the pages they are spread over.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_PACKING_CHART_LAYOUTS_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_PACKING_CHART_LAYOUTS_H

@@ -1,5 +1,8 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The charts to pack, read from the user's maps into one set, and the
+// similarity each one gets when placed.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_PACKING_CHART_SET_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_PACKING_CHART_SET_H

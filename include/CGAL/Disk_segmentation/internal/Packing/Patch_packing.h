@@ -1,5 +1,7 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// pack_patches() on maps of the right key types, with checked settings.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_PACKING_PATCH_PACKING_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_PACKING_PATCH_PACKING_H

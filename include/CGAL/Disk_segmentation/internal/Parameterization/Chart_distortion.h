@@ -1,10 +1,12 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The distortion of one chart under a map: area-weighted means and
+// extremes of its triangles' singular values.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_PARAMETERIZATION_CHART_DISTORTION_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_PARAMETERIZATION_CHART_DISTORTION_H
 
-#include <CGAL/Disk_segmentation/Distortion_bound.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Chart_parameterization.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Indexed_triangle_mesh.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Triangle_distortion.h>
@@ -20,7 +22,7 @@ namespace internal {
 // The distortion of one chart, normalized to its 3D area (so that only the
 // parameterization is measured, not its scale): area-weighted means and the
 // extremes over its triangles. Triangles of zero 3D area have no Jacobian
-// and are skipped.
+// and are skipped. Bound_test judges it against a Distortion_bound.
 struct Chart_distortion
 {
   double angle = 0;           // mean |log(s1 / s2)|
@@ -29,14 +31,6 @@ struct Chart_distortion
   double min_area_scale = 1;  // smallest s1 s2
   double max_area_scale = 1;  // largest s1 s2
   double stretch_p95 = 1;     // 95th percentile of s1 / s2 over the triangles (nearest rank)
-
-  bool meets(const Distortion_bound& b) const
-  {
-    // Written so that a NaN fails.
-    return angle <= b.max_angle_distortion && area <= b.max_area_distortion && max_stretch <= b.max_stretch &&
-           max_area_scale <= b.max_area_scale && min_area_scale * b.max_area_scale >= 1 &&
-           stretch_p95 <= b.max_stretch_p95;
-  }
 };
 
 // The distortion of `c` under the map `uv` (one UV per local vertex).

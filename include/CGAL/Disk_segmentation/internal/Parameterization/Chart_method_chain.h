@@ -1,5 +1,8 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Runs a chart's method, then its fallbacks, until the map is valid, and
+// counts what the solves cost.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_PARAMETERIZATION_CHART_METHOD_CHAIN_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_PARAMETERIZATION_CHART_METHOD_CHAIN_H

@@ -1,5 +1,8 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The methods that parameterize a chart (ARAP, LSCM, the fixed-border
+// ones, the user's parameterizer) behind one interface.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_PARAMETERIZATION_CHART_METHODS_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_PARAMETERIZATION_CHART_METHODS_H

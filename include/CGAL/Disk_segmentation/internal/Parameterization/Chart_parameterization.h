@@ -1,5 +1,8 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// ARAP maps of a chart from its starts: the free-border LSCM map first, then
+// SMP's LSCM and injective maps on a circle; one triangle laid out as is.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_PARAMETERIZATION_CHART_PARAMETERIZATION_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_PARAMETERIZATION_CHART_PARAMETERIZATION_H
@@ -9,20 +12,17 @@
 #include <CGAL/Disk_segmentation/Chart_parameterizer.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Indexed_triangle_mesh.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Region_slots.h>
+#include <CGAL/Disk_segmentation/internal/Parameterization/Arap_early_look.h>
+#include <CGAL/Disk_segmentation/internal/Parameterization/Chart.h>
+#include <CGAL/Disk_segmentation/internal/Parameterization/Chart_uv_validity.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Free_border_lscm.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Local_global_arap.h>
+#include <CGAL/Disk_segmentation/internal/Parameterization/SMP_parameterizers.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Triangle_distortion.h>
 
-#include <CGAL/Eigen_solver_traits.h>
-#include <CGAL/Eigen_sparse_matrix.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_2_algorithms.h>
 #include <CGAL/Surface_mesh_parameterization/Barycentric_mapping_parameterizer_3.h>
-#include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
-#include <CGAL/Surface_mesh_parameterization/Error_code.h>
 #include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Mean_value_coordinates_parameterizer_3.h>
-#include <CGAL/Surface_mesh_parameterization/parameterize.h>
 
 #include <algorithm>
 #include <array>
@@ -36,315 +36,8 @@ namespace CGAL {
 namespace Disk_segmentation {
 namespace internal {
 
-// One chart cut out of the indexed mesh, with its own vertex numbering so that
-// charts can be parameterized independently (and in parallel).
-struct Chart
-{
-  std::vector<Index> faces;                     // faces of the indexed mesh
-  std::vector<Index> vertices;                  // local vertex -> indexed-mesh vertex
-  std::vector<std::array<Index, 3> > triangles; // local corners of each face
-  std::vector<std::array<double, 2> > uv;       // local vertex -> UV
-  // Its indexed-mesh vertices in the order the solvers eliminate them:
-  // recorded when the chart is first solved, or inherited from the charts
-  // it was built from (see Inherited_elimination_order.h); empty until then.
-  std::vector<Index> elimination_order;
-};
-
-// Per-thread local numbering of the vertices of a chart being built or
-// read, sized to the chart (a mesh-sized array per thread grew with mesh
-// size times threads; std::unordered_map was 1 % of the time).
-inline Region_slots& chart_vertex_slots()
-{
-  thread_local Region_slots slots;
-  return slots;
-}
-
-// Local vertices are numbered as first met.
-inline Chart make_chart(const Indexed_triangle_mesh& m, const std::vector<Index>& faces)
-{
-  Region_slots& slots = chart_vertex_slots();
-  slots.clear_for_corners(m, faces);
-  Chart c;
-  c.faces = faces;
-  c.triangles.reserve(faces.size());
-  for(Index f : faces)
-  {
-    std::array<Index, 3> t;
-    for(int i = 0; i < 3; ++i)
-    {
-      t[i] = slots.insert(m.corners[f][i]);
-      if(t[i] == c.vertices.size())
-        c.vertices.push_back(m.corners[f][i]);
-    }
-    c.triangles.push_back(t);
-  }
-  return c;
-}
-
-// The border of a chart that is a disk, as one cycle of local vertices in
-// the orientation of its triangles; empty if the border edges do not form
-// one cycle through distinct vertices.
-inline std::vector<Index> chart_border_loop(const Chart& c)
-{
-  // Directed edges as the triangles give them, grouped by their source
-  // (counting sort): an edge is on the border when its reverse is not
-  // among the edges out of its target.
-  const std::size_t nv = c.vertices.size();
-  std::vector<std::size_t> first(nv + 1, 0);
-  for(const auto& t : c.triangles)
-    for(int i = 0; i < 3; ++i)
-      ++first[t[i] + 1];
-  for(std::size_t v = 0; v < nv; ++v)
-    first[v + 1] += first[v];
-  std::vector<Index> out(first[nv]);
-  {
-    std::vector<std::size_t> fill(first.begin(), first.end() - 1);
-    for(const auto& t : c.triangles)
-      for(int i = 0; i < 3; ++i)
-        out[fill[t[i]]++] = t[(i + 1) % 3];
-  }
-  // The edges out of a vertex of high valence are sorted and searched in
-  // halves (looking each up in turn was quadratic there); the few out of
-  // any other vertex are scanned.
-  const std::size_t few = 16;
-  for(std::size_t v = 0; v < nv; ++v)
-    if(first[v + 1] - first[v] > few)
-      std::sort(out.begin() + first[v], out.begin() + first[v + 1]);
-  auto has_edge = [&](Index a, Index b) {
-    const auto begin = out.begin() + first[a], end = out.begin() + first[a + 1];
-    return end - begin > std::ptrdiff_t(few) ? std::binary_search(begin, end, b) : std::find(begin, end, b) != end;
-  };
-  std::vector<Index> next(nv, no_index);
-  std::size_t border_edges = 0;
-  Index start = no_index;
-  for(const auto& t : c.triangles)
-    for(int i = 0; i < 3; ++i)
-    {
-      const std::pair<Index, Index> e(t[i], t[(i + 1) % 3]);
-      if(has_edge(e.second, e.first))
-        continue;
-      if(next[e.first] != no_index)
-        return std::vector<Index>();  // a vertex on the border twice
-      next[e.first] = e.second;
-      ++border_edges;
-      start = e.first;
-    }
-  std::vector<Index> loop;
-  if(start == no_index)
-    return loop;
-  // Ends: each step follows a distinct border edge, at most border_edges.
-  Index v = start;
-  do
-  {
-    loop.push_back(v);
-    v = next[v];
-  } while(v != no_index && v != start && loop.size() <= border_edges);
-  if(v != start || loop.size() != border_edges)
-    return std::vector<Index>();
-  return loop;
-}
-
-typedef std::vector<std::array<double, 2> > Chart_uv;
-
-constexpr const char* non_finite_uv = "non-finite UV";
-
-// Whether a vertex of the closed polygon `border` lies within `tolerance` of
-// a border segment it is not an end of. Packing moves every UV by a
-// similarity rounded to doubles: such a border could touch itself once
-// packed (two copies of a vertex split in 3D, laid out 1e-17 apart, met).
-// Each segment is tested against the vertices in its x-range, sorted.
-template <typename Point_2>
-bool border_nearly_touches_itself(const std::vector<Point_2>& border, double tolerance)
-{
-  const std::size_t n = border.size();
-  if(n < 4)
-    return false;
-  std::vector<std::pair<double, std::size_t> > by_x(n);
-  for(std::size_t i = 0; i < n; ++i)
-    by_x[i] = std::make_pair(border[i].x(), i);
-  std::sort(by_x.begin(), by_x.end());
-  for(std::size_t k = 0; k < n; ++k)
-  {
-    const Point_2& a = border[k];
-    const Point_2& b = border[(k + 1) % n];
-    const double dx = b.x() - a.x(), dy = b.y() - a.y(), length2 = dx * dx + dy * dy;
-    const double lo = (std::min)(a.x(), b.x()) - tolerance, hi = (std::max)(a.x(), b.x()) + tolerance;
-    for(auto it = std::lower_bound(by_x.begin(), by_x.end(), std::make_pair(lo, std::size_t(0)));
-        it != by_x.end() && it->first <= hi; ++it)
-    {
-      const std::size_t i = it->second;
-      if(i == k || i == (k + 1) % n)
-        continue;
-      const Point_2& p = border[i];
-      // The closest point of the segment, clamped to its ends.
-      const double t = length2 > 0 ? (std::max)(0., (std::min)(1., ((p.x() - a.x()) * dx + (p.y() - a.y()) * dy) / length2)) : 0.;
-      const double ex = p.x() - (a.x() + t * dx), ey = p.y() - (a.y() + t * dy);
-      if(ex * ex + ey * ey <= tolerance * tolerance)
-        return true;
-    }
-  }
-  return false;
-}
-
-// What is wrong with a chart's UVs, or an empty string. A chart is valid when
-// its UVs are finite, every triangle keeps the 3D winding with a non-negligible
-// area, and its border is a simple polygon; a locally injective map of a disk
-// whose border is simple is globally injective.
-inline std::string chart_uv_problem(const Chart& c, const std::vector<std::array<double, 2> >& uv,
-                                    const std::vector<Index>& border_loop)
-{
-  typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_2 Point_2;
-  for(const auto& u : uv)
-    if(!std::isfinite(u[0]) || !std::isfinite(u[1]))
-      return non_finite_uv;
-
-  double total = 0;
-  std::vector<double> areas(c.triangles.size());
-  for(std::size_t t = 0; t < c.triangles.size(); ++t)
-  {
-    const auto& a = uv[c.triangles[t][0]];
-    const auto& b = uv[c.triangles[t][1]];
-    const auto& d = uv[c.triangles[t][2]];
-    if(CGAL::orientation(Point_2(a[0], a[1]), Point_2(b[0], b[1]), Point_2(d[0], d[1])) != CGAL::LEFT_TURN)
-      return "flipped or degenerate UV triangle";
-    areas[t] = 0.5 * ((b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]));
-    total += areas[t];
-  }
-  // Triangles too thin to rasterize or to invert in a texture lookup; and
-  // needles whose height is under 1e-10 of the chart's size, which packing
-  // (a similarity rounded to doubles in [0, 1]) would flatten to a line.
-  const double mean = total / static_cast<double>(c.triangles.size());
-  double xmin = uv[0][0], xmax = uv[0][0], ymin = uv[0][1], ymax = uv[0][1];
-  for(const auto& u : uv)
-  {
-    xmin = (std::min)(xmin, u[0]); xmax = (std::max)(xmax, u[0]);
-    ymin = (std::min)(ymin, u[1]); ymax = (std::max)(ymax, u[1]);
-  }
-  // Squared: 2 area > 1e-10 size longest, without a square root per edge.
-  const double chart_size2 = (xmax - xmin) * (xmax - xmin) + (ymax - ymin) * (ymax - ymin);
-  for(std::size_t t = 0; t < c.triangles.size(); ++t)
-  {
-    if(!(areas[t] > 1e-12 * mean))
-      return "degenerate UV triangle";
-    double longest2 = 0;
-    for(int i = 0; i < 3; ++i)
-    {
-      const auto& a = uv[c.triangles[t][i]];
-      const auto& b = uv[c.triangles[t][(i + 1) % 3]];
-      longest2 = (std::max)(longest2, (b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]));
-    }
-    if(!(4 * areas[t] * areas[t] > 1e-20 * chart_size2 * longest2))
-      return "degenerate UV triangle";
-  }
-  const double chart_size = std::sqrt(chart_size2);
-
-  std::vector<Point_2> polygon;
-  polygon.reserve(border_loop.size());
-  for(Index v : border_loop)
-    polygon.push_back(Point_2(uv[v][0], uv[v][1]));
-  if(polygon.size() >= 4 && !CGAL::is_simple_2(polygon.begin(), polygon.end()))
-    return "self-intersecting UV border";
-  if(border_nearly_touches_itself(polygon, 1e-10 * chart_size))
-    return "UV border nearly touches itself";
-  return std::string();
-}
-
-// Free-border methods may return the mirror image of the surface; mirroring
-// it back keeps the 3D winding that normal-map baking relies on.
-inline void keep_winding(const Chart& c, Chart_uv& uv)
-{
-  double signed_area = 0;
-  for(const auto& t : c.triangles)
-  {
-    const auto& a = uv[t[0]]; const auto& b = uv[t[1]]; const auto& d = uv[t[2]];
-    signed_area += (b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]);
-  }
-  if(signed_area < 0)
-    for(auto& u : uv)
-      u[0] = -u[0];
-}
-
-inline void keep_winding(Chart& c) { keep_winding(c, c.uv); }
-
-// The border of the fixed-border methods: a circle, by arc length.
-typedef CGAL::Surface_mesh_parameterization::Circular_border_arc_length_parameterizer_3<Chart_mesh> Circle_border;
-
-// Solver traits for SMP's fixed-border methods: a direct sparse LU instead
-// of the default BiCGSTAB with incomplete LU (measured 20% faster on a
-// 75k-face chart, and it cannot fail to converge), factored once for the
-// two systems (u and v) that share one matrix, where Eigen_solver_traits
-// would factor it twice.
-class Factor_once_sparse_lu
-  : public CGAL::Eigen_solver_traits<
-      Eigen::SparseLU<CGAL::Eigen_sparse_matrix<double>::EigenType, Eigen::COLAMDOrdering<int> > >
-{
-  typedef CGAL::Eigen_solver_traits<
-    Eigen::SparseLU<CGAL::Eigen_sparse_matrix<double>::EigenType, Eigen::COLAMDOrdering<int> > > Base;
-
-public:
-  using Base::linear_solver;
-
-  bool linear_solver(const Matrix& A, const Vector& B, Vector& X, NT& D)
-  {
-    D = 1;
-    const auto& a = A.eigen_object();
-    const double checksum = a.coeffs().sum();
-    if(&a != factored_ || a.nonZeros() != factored_non_zeros_ || checksum != factored_checksum_)
-    {
-      solver().compute(a);
-      if(solver().info() != Eigen::Success)
-      {
-        factored_ = nullptr;
-        return false;
-      }
-      factored_ = &a;
-      factored_non_zeros_ = a.nonZeros();
-      factored_checksum_ = checksum;
-    }
-    X = solver().solve(B);
-    return solver().info() == Eigen::Success;
-  }
-
-private:
-  const void* factored_ = nullptr;
-  Eigen::Index factored_non_zeros_ = 0;
-  double factored_checksum_ = 0;
-};
-
 // Local/global ARAP iterations: the energy drops little after ten.
 constexpr int arap_iterations = 10;
-
-template <typename Parameterizer>
-std::string run_parameterizer(Chart_mesh& mesh, Parameterizer parameterizer,
-                              Chart_mesh::Halfedge_index border, Chart& c)
-{
-  namespace SMP = CGAL::Surface_mesh_parameterization;
-  typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_2 Point_2;
-  auto uv = mesh.add_property_map<Chart_mesh::Vertex_index, Point_2>("v:uv", Point_2(0, 0)).first;
-  SMP::Error_code status;
-  try
-  {
-    status = SMP::parameterize(mesh, parameterizer, border, uv);
-  }
-  catch(const std::exception& e)
-  {
-    mesh.remove_property_map(uv);
-    return std::string("parameterizer threw: ") + e.what();
-  }
-  // A user's parameterizer gets the mesh by reference: one that added or
-  // removed vertices would have its UVs read out of place.
-  if(mesh.number_of_vertices() != c.uv.size() || mesh.has_garbage())
-  {
-    mesh.remove_property_map(uv);
-    return "the parameterizer changed the chart's mesh";
-  }
-  for(Chart_mesh::Vertex_index v : mesh.vertices())
-    c.uv[std::size_t(v)] = {{ uv[v].x(), uv[v].y() }};
-  mesh.remove_property_map(uv);
-  if(status != SMP::OK)
-    return SMP::get_error_message(status);
-  return std::string();
-}
 
 // The solvers' view of `c`, eliminating its vertices in
 // `c.elimination_order` when it has one, else in a fill-reducing order
@@ -385,39 +78,6 @@ inline Chart_geometry chart_geometry(const Indexed_triangle_mesh& m, Chart& c)
   }
   return g;
 }
-
-// What a look at an early ARAP iterate of a chart says of the iterations
-// left.
-enum class Early_verdict
-{
-  iterate_on,   // they are needed
-  good_enough,  // the iterate already meets what the chart must meet: stop there if it is valid
-  hopeless      // it is so far from it that they would not bring it there: stop
-};
-
-// A verdict, with the measure it was drawn from (Split_rule: the chart's
-// excess), so that the chart need not be measured again.
-struct Early_judgement
-{
-  Early_verdict verdict = Early_verdict::iterate_on;
-  double measure = 0.;
-};
-
-// Judges chart `c` under the ARAP iterate `uv` after
-// arap_early_look_iterations iterations (see Split_rule::early_verdict()).
-// Most charts that meet the bound after all iterations already meet it
-// there, and most that miss it by far already miss it by far.
-typedef std::function<Early_judgement(const Chart&, const Chart_uv&)> Arap_early_look;
-constexpr int arap_early_look_iterations = 2;
-
-// The early look of one chart's parameterization: the judge (none: all
-// iterations), and its judgement of the map the chart ends with when the
-// look ended the iterations on it (else `iterate_on`).
-struct Early_look
-{
-  const Arap_early_look* judge = nullptr;
-  Early_judgement ended;
-};
 
 // ARAP iterations on `c` from `start`. A valid start keeps only valid
 // iterates; an invalid one (LSCM folds some jagged charts, two glued maps

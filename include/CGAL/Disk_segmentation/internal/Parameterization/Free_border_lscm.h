@@ -1,5 +1,8 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Least squares conformal map of a disk with a free border, the start
+// of ARAP, assembled and solved here with one factorization.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_PARAMETERIZATION_FREE_BORDER_LSCM_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_PARAMETERIZATION_FREE_BORDER_LSCM_H

@@ -1,5 +1,8 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Sparse LDL^H factorization of a Hermitian matrix, bit for bit Eigen's
+// SimplicialLDLT, for the complex system of the free-border LSCM.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_PARAMETERIZATION_HERMITIAN_LDLT_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_PARAMETERIZATION_HERMITIAN_LDLT_H

@@ -1,5 +1,8 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Elimination orders that charts built from solved charts inherit, so
+// that their solves skip the minimum degree ordering.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_PARAMETERIZATION_INHERITED_ELIMINATION_ORDER_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_PARAMETERIZATION_INHERITED_ELIMINATION_ORDER_H

@@ -1,5 +1,8 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Local/global ARAP iterations on a chart with one factorization of the
+// cotangent Laplacian, and the chart's edge graph the solvers share.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_PARAMETERIZATION_LOCAL_GLOBAL_ARAP_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_PARAMETERIZATION_LOCAL_GLOBAL_ARAP_H

@@ -1,5 +1,8 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The Jacobian of one triangle's map from 3D to UV and its singular
+// values: what every distortion measure is made of.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_PARAMETERIZATION_TRIANGLE_DISTORTION_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_PARAMETERIZATION_TRIANGLE_DISTORTION_H

@@ -1,5 +1,8 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Removes the saw teeth of the borders between disk regions by single
+// face moves that keep both regions disks.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_SEGMENTATION_BORDER_SMOOTHER_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_SEGMENTATION_BORDER_SMOOTHER_H

@@ -1,5 +1,8 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Greedy merging of adjacent disk regions into larger disks (the paper's
+// Algorithm 2).
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_SEGMENTATION_DISK_REGION_MERGER_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_SEGMENTATION_DISK_REGION_MERGER_H

@@ -1,5 +1,8 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The Gaussian curvature a region holds inside it, which predicts charts
+// too curved to meet the distortion bound.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_SEGMENTATION_REGION_CURVATURE_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_SEGMENTATION_REGION_CURVATURE_H

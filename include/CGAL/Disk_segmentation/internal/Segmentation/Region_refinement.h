@@ -1,5 +1,8 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Refines regions into topological disks by Voronoi splits (the paper's
+// Algorithm 1), at a cost that depends on the regions' sizes only.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_SEGMENTATION_REGION_REFINEMENT_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_SEGMENTATION_REGION_REFINEMENT_H
