@@ -17,15 +17,15 @@ namespace CGAL {
 namespace Disk_segmentation {
 namespace internal {
 
-struct Packing_point
+struct Planar_point
 {
   double x, y;
 };
 
-inline double packing_dot(const Packing_point& a, const Packing_point& b) { return a.x * b.x + a.y * b.y; }
+inline double planar_dot(const Planar_point& a, const Planar_point& b) { return a.x * b.x + a.y * b.y; }
 
 // Twice the signed area of (o, a, b): positive for a left turn.
-inline double packing_cross(const Packing_point& o, const Packing_point& a, const Packing_point& b)
+inline double planar_cross(const Planar_point& o, const Planar_point& a, const Planar_point& b)
 {
   return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
 }
@@ -33,13 +33,13 @@ inline double packing_cross(const Packing_point& o, const Packing_point& a, cons
 // Drops the points strictly inside the octagon of the extreme points in eight
 // directions (Akl-Toussaint): they cannot be hull vertices, and in a chart
 // they are most of the corners, so the sort that follows stays short.
-inline void discard_inner_points(std::vector<Packing_point>& points)
+inline void discard_inner_points(std::vector<Planar_point>& points)
 {
   if(points.size() < 32)
     return;
   // Directions at 0, 45, ..., 315 degrees (unnormalized): their support
   // points come in counterclockwise order around the hull.
-  auto project = [](const Packing_point& p, double* v)
+  auto project = [](const Planar_point& p, double* v)
   {
     v[0] = p.x; v[1] = p.x + p.y; v[2] = p.y; v[3] = p.y - p.x;
     v[4] = -p.x; v[5] = -p.x - p.y; v[6] = -p.y; v[7] = p.x - p.y;
@@ -57,7 +57,7 @@ inline void discard_inner_points(std::vector<Packing_point>& points)
         best[k] = i;
       }
   }
-  Packing_point octagon[8];
+  Planar_point octagon[8];
   for(int k = 0; k < 8; ++k)
     octagon[k] = points[best[k]];
 
@@ -66,7 +66,7 @@ inline void discard_inner_points(std::vector<Packing_point>& points)
   {
     bool inside = true;
     for(int k = 0; k < 8 && inside; ++k)
-      inside = packing_cross(octagon[k], octagon[(k + 1) & 7], points[i]) > 0.;
+      inside = planar_cross(octagon[k], octagon[(k + 1) & 7], points[i]) > 0.;
     if(!inside)
       points[kept++] = points[i];
   }
@@ -76,13 +76,13 @@ inline void discard_inner_points(std::vector<Packing_point>& points)
 // Convex hull, counterclockwise, without collinear vertices (Andrew's
 // monotone chain). Reorders `points`. Fewer than three distinct or only
 // collinear points give the one or two extreme points.
-inline void convex_hull(std::vector<Packing_point>& points, std::vector<Packing_point>& hull)
+inline void convex_hull(std::vector<Planar_point>& points, std::vector<Planar_point>& hull)
 {
   hull.clear();
   discard_inner_points(points);
-  std::sort(points.begin(), points.end(), [](const Packing_point& a, const Packing_point& b)
+  std::sort(points.begin(), points.end(), [](const Planar_point& a, const Planar_point& b)
             { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-  points.erase(std::unique(points.begin(), points.end(), [](const Packing_point& a, const Packing_point& b)
+  points.erase(std::unique(points.begin(), points.end(), [](const Planar_point& a, const Planar_point& b)
                            { return a.x == b.x && a.y == b.y; }),
                points.end());
   const std::size_t n = points.size();
@@ -96,12 +96,12 @@ inline void convex_hull(std::vector<Packing_point>& points, std::vector<Packing_
   std::size_t k = 0;
   for(std::size_t i = 0; i < n; ++i)
   {
-    while(k >= 2 && packing_cross(hull[k - 2], hull[k - 1], points[i]) <= 0.) --k;
+    while(k >= 2 && planar_cross(hull[k - 2], hull[k - 1], points[i]) <= 0.) --k;
     hull[k++] = points[i];
   }
   for(std::size_t i = n - 1, lower = k + 1; i-- > 0;)
   {
-    while(k >= lower && packing_cross(hull[k - 2], hull[k - 1], points[i]) <= 0.) --k;
+    while(k >= lower && planar_cross(hull[k - 2], hull[k - 1], points[i]) <= 0.) --k;
     hull[k++] = points[i];
   }
   hull.resize(k - 1);

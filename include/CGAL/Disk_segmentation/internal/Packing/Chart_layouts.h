@@ -57,7 +57,7 @@ inline std::size_t shape_pad_cells(const Packing_settings& s, std::size_t column
 // into the other members.
 struct Shape_input
 {
-  std::vector<Packing_point> framed;  // corners in the chart's frame
+  std::vector<Planar_point> framed;  // corners in the chart's frame
   std::vector<unsigned char> border_edges;
   std::vector<Profile_chart> charts;
   double total_area = 0.;  // of the charts at one UV unit per unit of length

@@ -50,12 +50,12 @@ std::size_t checked_patch_id(const Id& id, std::size_t face, std::size_t number_
 }
 
 template <typename UVPoint>
-Packing_point to_packing_point(const UVPoint& p)
+Planar_point to_packing_point(const UVPoint& p)
 {
   return { CGAL::to_double(p.x()), CGAL::to_double(p.y()) };
 }
 
-inline Packing_point relative_to(const Packing_point& p, const Packing_point& origin)
+inline Planar_point relative_to(const Planar_point& p, const Planar_point& origin)
 {
   return { p.x - origin.x, p.y - origin.y };
 }
@@ -80,7 +80,7 @@ struct Chart_set
   // The UVs of the corners grouped by patch (faces(tm) order within a
   // patch), so that each chart is read from one contiguous run; patch p
   // owns the corners [3 first_face[p], 3 first_face[p + 1]).
-  std::vector<Packing_point> corners;
+  std::vector<Planar_point> corners;
   // Per face, in the order of `corners`: bit j is set when the edge from
   // corner j to corner j + 1 is on its chart's border (the next face is in
   // another patch or none, or the two faces give its ends different UVs).
@@ -88,7 +88,7 @@ struct Chart_set
   // Corners are stored relative to their chart's first UV: a chart 1e-13
   // wide placed at 0.45 would otherwise lose its shape to cancellation
   // when it is moved to its place.
-  std::vector<Packing_point> origin;
+  std::vector<Planar_point> origin;
   std::vector<std::size_t> first_face;       // P + 1 entries
   std::vector<double> uv_area, surface_area;
   // 3D areas are measured with lengths multiplied by this power of two.
@@ -110,10 +110,10 @@ bool on_chart_border(const TriangleMesh& tm, const FacePatchMap& face_patch_map,
   const auto o = opposite(h, tm);
   if(is_border(o, tm) || static_cast<std::size_t>(get(face_patch_map, face(o, tm))) != p)
     return true;
-  const Packing_point h_source = to_packing_point(get(uv_map, prev(h, tm)));
-  const Packing_point h_target = to_packing_point(get(uv_map, h));
-  const Packing_point o_source = to_packing_point(get(uv_map, prev(o, tm)));
-  const Packing_point o_target = to_packing_point(get(uv_map, o));
+  const Planar_point h_source = to_packing_point(get(uv_map, prev(h, tm)));
+  const Planar_point h_target = to_packing_point(get(uv_map, h));
+  const Planar_point o_source = to_packing_point(get(uv_map, prev(o, tm)));
+  const Planar_point o_target = to_packing_point(get(uv_map, o));
   return !(h_source.x == o_target.x && h_source.y == o_target.y && h_target.x == o_source.x &&
            h_target.y == o_source.y);
 }
@@ -157,7 +157,7 @@ void collect_charts(const TriangleMesh& tm, const FacePatchMap& face_patch_map, 
   charts.surface_area.assign(number_of_patches, 0.);
   charts.corners.resize(3 * number_of_faces);
   charts.border_edges.resize(number_of_faces);
-  charts.origin.assign(number_of_patches, Packing_point());
+  charts.origin.assign(number_of_patches, Planar_point());
   std::vector<std::size_t> cursor(charts.first_face.begin(), charts.first_face.end() - 1);
   const auto coordinates_of = make_coordinates_reader(tm, np);
   // Only ratios of 3D areas matter: they are measured with the mesh's
@@ -197,12 +197,12 @@ void collect_charts(const TriangleMesh& tm, const FacePatchMap& face_patch_map, 
       (on_chart_border(tm, face_patch_map, uv_map, p, h1) ? 1u : 0u) |
       (on_chart_border(tm, face_patch_map, uv_map, p, h2) ? 2u : 0u) |
       (on_chart_border(tm, face_patch_map, uv_map, p, h0) ? 4u : 0u));
-    Packing_point* corner = &charts.corners[3 * cursor[p]++];
+    Planar_point* corner = &charts.corners[3 * cursor[p]++];
     corner[0] = relative_to(to_packing_point(get(uv_map, h0)), charts.origin[p]);
     corner[1] = relative_to(to_packing_point(get(uv_map, h1)), charts.origin[p]);
     corner[2] = relative_to(to_packing_point(get(uv_map, h2)), charts.origin[p]);
     // A non-finite UV makes the patch's area non-finite, reported below.
-    charts.uv_area[p] += 0.5 * packing_cross(corner[0], corner[1], corner[2]);
+    charts.uv_area[p] += 0.5 * planar_cross(corner[0], corner[1], corner[2]);
     if(with_surface_area)
     {
       const std::array<double, 3> x = coordinates_of(target(h0, tm));
@@ -250,7 +250,7 @@ void frame_charts(Packing_method method, unsigned int threads, Chart_set<Triangl
   charts.rotation.assign(charts.size(), Packing_rotation());
   charts.box.assign(charts.size(), Packing_box());
   for_each_index(charts.size(), threads, [&](std::size_t p) {
-    std::vector<Packing_point> points, hull;
+    std::vector<Planar_point> points, hull;
     const auto begin = charts.corners.begin() + static_cast<std::ptrdiff_t>(3 * charts.first_face[p]);
     const auto end = charts.corners.begin() + static_cast<std::ptrdiff_t>(3 * charts.first_face[p + 1]);
     points.assign(begin, end);
@@ -275,7 +275,7 @@ void frame_charts(Packing_method method, unsigned int threads, Chart_set<Triangl
   });
   if(method != Packing_method::TIGHT)
   {
-    std::vector<Packing_point>().swap(charts.corners);
+    std::vector<Planar_point>().swap(charts.corners);
     std::vector<unsigned char>().swap(charts.border_edges);
   }
 }

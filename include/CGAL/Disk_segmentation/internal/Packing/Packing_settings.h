@@ -1,5 +1,9 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The packing's named parameters, read and checked once (packing_settings()),
+// and what follows from them alone: the page's aspect, how many charts the
+// padding leaves room for.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_PACKING_PACKING_SETTINGS_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_PACKING_PACKING_SETTINGS_H

@@ -65,18 +65,18 @@ Packing_report pack_checked_patches(const TriangleMesh& tm, FacePatchMap face_pa
   {
     const std::size_t p = charts.patch_of[i];
     const Chart_similarity& sim = placement[p];
-    std::array<Packing_point, 3> before, after;
+    std::array<Planar_point, 3> before, after;
     std::size_t j = 0;
     for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(charts.faces[i], tm), tm))
     {
       before[j] = relative_to(to_packing_point(get(uv_map, h)), charts.origin[p]);
-      const Packing_point q = sim.rotation(before[j]);
-      after[j] = Packing_point{ sim.scale * q.x + sim.tx, (sim.scale * q.y + sim.ty) / aspect };
+      const Planar_point q = sim.rotation(before[j]);
+      after[j] = Planar_point{ sim.scale * q.x + sim.tx, (sim.scale * q.y + sim.ty) / aspect };
       packed.push_back(UV_point(after[j].x, after[j].y));
       ++j;
     }
     // A similarity keeps orientations: only rounding can take one away.
-    if(packing_cross(before[0], before[1], before[2]) > 0. && !(packing_cross(after[0], after[1], after[2]) > 0.))
+    if(planar_cross(before[0], before[1], before[2]) > 0. && !(planar_cross(after[0], after[1], after[2]) > 0.))
       ++collapsed;
   }
   if(collapsed > 0)

@@ -43,7 +43,7 @@ struct Profile_placement
 // turns its lengths into UV lengths at scale 1.
 struct Profile_chart
 {
-  const Packing_point* corners = nullptr;
+  const Planar_point* corners = nullptr;
   std::size_t number_of_corners = 0;
   const unsigned char* border_edges = nullptr;
   double density = 1.;
@@ -127,7 +127,7 @@ private:
   {
     std::vector<long> low, high;
     long height = 0;
-    std::vector<Packing_point> points;  // scratch, one per turn
+    std::vector<Planar_point> points;  // scratch, one per turn
   };
 
   // A chart's place: its score (top plus weighted waste), then its row.
@@ -188,12 +188,12 @@ private:
   bool profile(const Profile_chart& chart, double scale, int turns, Profile& p) const
   {
     const double to_cells = scale * chart.density * double(n_);
-    std::vector<Packing_point>& points = p.points;
+    std::vector<Planar_point>& points = p.points;
     points.resize(chart.number_of_corners);
     Packing_box box;
     for(std::size_t k = 0; k < chart.number_of_corners; ++k)
     {
-      Packing_point q = chart.corners[k];
+      Planar_point q = chart.corners[k];
       for(int t = 0; t < turns; ++t)
         q = quarter_turn(q);
       points[k] = q;
@@ -212,7 +212,7 @@ private:
     // valence.
     for(std::size_t k = 0; k + 2 < chart.number_of_corners; k += 3)
     {
-      Packing_point t[3];
+      Planar_point t[3];
       for(int j = 0; j < 3; ++j)
         t[j] = { to_cells * (points[k + j].x - box.xmin), to_cells * (points[k + j].y - box.ymin) };
       for(int j = 0; j < 3; ++j)

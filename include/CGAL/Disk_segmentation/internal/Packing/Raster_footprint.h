@@ -37,7 +37,7 @@ struct Raster_footprint
   std::vector<long> shape;    // width, height, then the zone's intervals row by row
   // Scratch of its rasterization, one per turn so that the turns of a
   // chart can be rasterized side by side.
-  std::vector<Packing_point> points;
+  std::vector<Planar_point> points;
   Cell_rows cells, zone_cells;
   std::vector<std::pair<long, double>> crossings;
 };
@@ -47,7 +47,7 @@ constexpr double raster_slack = 1e-9;
 
 // Marks every cell the segment ab touches: per row, its x-range over the
 // row's slab.
-inline void mark_segment_cells(const Packing_point& a, const Packing_point& b, long rows, long columns,
+inline void mark_segment_cells(const Planar_point& a, const Planar_point& b, long rows, long columns,
                                Cell_rows& cells)
 {
   // Rows are the slabs of the segment transposed.
@@ -62,7 +62,7 @@ inline void mark_segment_cells(const Packing_point& a, const Packing_point& b, l
 // Where the border edge (a, b) crosses the centers of rows: a point is
 // counted on the side of its larger y, so that a closed border crosses
 // every row an even number of times.
-inline void add_row_crossings(const Packing_point& a, const Packing_point& b, long rows,
+inline void add_row_crossings(const Planar_point& a, const Planar_point& b, long rows,
                               std::vector<std::pair<long, double>>& crossings)
 {
   const double lo = (std::min)(a.y, b.y), hi = (std::max)(a.y, b.y);
@@ -86,12 +86,12 @@ inline bool turn_into_cells(const Profile_chart& chart, double to_cells, int eig
                             std::size_t page_columns, std::size_t page_rows, Raster_footprint& f, long& columns,
                             long& rows)
 {
-  std::vector<Packing_point>& points = f.points;
+  std::vector<Planar_point>& points = f.points;
   points.resize(chart.number_of_corners);
   Packing_box box;
   for(std::size_t k = 0; k < chart.number_of_corners; ++k)
   {
-    Packing_point q = chart.corners[k];
+    Planar_point q = chart.corners[k];
     for(int t = 0; t < eighths / 2; ++t)
       q = quarter_turn(q);
     if(eighths % 2 == 1)
@@ -104,7 +104,7 @@ inline bool turn_into_cells(const Profile_chart& chart, double to_cells, int eig
     return false;
   columns = (std::max)(1L, static_cast<long>(std::ceil(w + raster_slack)));
   rows = (std::max)(1L, static_cast<long>(std::ceil(h + raster_slack)));
-  for(Packing_point& q : points)
+  for(Planar_point& q : points)
     q = { to_cells * (q.x - box.xmin), to_cells * (q.y - box.ymin) };
   return true;
 }
@@ -122,7 +122,7 @@ inline void cover_chart_cells(const Profile_chart& chart, long rows, long column
   crossings.clear();
   for(std::size_t k = 0; k + 2 < chart.number_of_corners; k += 3)
   {
-    const Packing_point* t = &f.points[k];
+    const Planar_point* t = &f.points[k];
     const unsigned char border = chart.border_edges[k / 3];
     for(int j = 0; j < 3; ++j)
       if(border & (1 << j))

@@ -27,7 +27,7 @@ struct Packing_rotation
 {
   double c = 1., s = 0.;
 
-  Packing_point operator()(const Packing_point& p) const { return { c * p.x - s * p.y, s * p.x + c * p.y }; }
+  Planar_point operator()(const Planar_point& p) const { return { c * p.x - s * p.y, s * p.x + c * p.y }; }
 
   // This rotation followed by a quarter turn counterclockwise.
   Packing_rotation quarter_turned() const { return { -s, c }; }
@@ -40,7 +40,7 @@ struct Packing_rotation
   }
 
   // The rotation that maps the unit direction u onto the x axis.
-  static Packing_rotation aligning(const Packing_point& u) { return { u.x, -u.y }; }
+  static Packing_rotation aligning(const Planar_point& u) { return { u.x, -u.y }; }
 };
 
 // Axis-aligned bounding box of a chart in its rotated frame.
@@ -52,7 +52,7 @@ struct Packing_box
   double width() const { return xmax - xmin; }
   double height() const { return ymax - ymin; }
 
-  void add(const Packing_point& p)
+  void add(const Planar_point& p)
   {
     xmin = (std::min)(xmin, p.x); xmax = (std::max)(xmax, p.x);
     ymin = (std::min)(ymin, p.y); ymax = (std::max)(ymax, p.y);
@@ -76,20 +76,20 @@ struct Packing_box
 struct Frame_extents
 {
   double width = 0., height = 0.;
-  Packing_point e{0., 0.}, g{0., 0.};
+  Planar_point e{0., 0.}, g{0., 0.};
 };
 
-inline Packing_point quarter_turn(const Packing_point& u) { return { -u.y, u.x }; }
+inline Planar_point quarter_turn(const Planar_point& u) { return { -u.y, u.x }; }
 
 // The range [lo, hi] of the y-coordinates of segment ab over the slab
 // left <= x <= right: its ends inside the slab and its crossings of the
 // slab's two sides. Returns false if the segment misses the slab.
-inline bool segment_slab_range(const Packing_point& a, const Packing_point& b, double left, double right,
+inline bool segment_slab_range(const Planar_point& a, const Planar_point& b, double left, double right,
                                double& lo, double& hi)
 {
   lo = std::numeric_limits<double>::infinity();
   hi = -lo;
-  for(const Packing_point* end : { &a, &b })
+  for(const Planar_point* end : { &a, &b })
     if(end->x >= left && end->x <= right)
     {
       lo = (std::min)(lo, end->y);
@@ -109,7 +109,7 @@ inline bool segment_slab_range(const Packing_point& a, const Packing_point& b, d
 // `slack` on both sides), s in [0, slabs), that segment ab meets, with the
 // range [lo, hi] of its y-coordinates there.
 template <typename Visit>
-void for_each_slab_of_segment(const Packing_point& a, const Packing_point& b, long slabs, double slack,
+void for_each_slab_of_segment(const Planar_point& a, const Planar_point& b, long slabs, double slack,
                               const Visit& visit)
 {
   const long s0 = (std::max)(0L, static_cast<long>(std::floor((std::min)(a.x, b.x) - slack)));
@@ -123,15 +123,15 @@ void for_each_slab_of_segment(const Packing_point& a, const Packing_point& b, lo
 }
 
 // An eighth of a turn counterclockwise, as Packing_rotation::eighth_turned().
-inline Packing_point eighth_turn(const Packing_point& u)
+inline Planar_point eighth_turn(const Planar_point& u)
 {
   const double h = std::sqrt(0.5);
   return { h * (u.x - u.y), h * (u.x + u.y) };
 }
 
-inline Packing_point normalized(const Packing_point& u)
+inline Planar_point normalized(const Planar_point& u)
 {
-  const double l = std::sqrt(packing_dot(u, u));
+  const double l = std::sqrt(planar_dot(u, u));
   return { u.x / l, u.y / l };
 }
 
@@ -142,50 +142,50 @@ inline Packing_point normalized(const Packing_point& u)
 class Support_sweep
 {
 public:
-  explicit Support_sweep(const std::vector<Packing_point>& hull) : hull_(hull) {}
+  explicit Support_sweep(const std::vector<Planar_point>& hull) : hull_(hull) {}
 
-  Frame_extents operator()(const Packing_point& u)
+  Frame_extents operator()(const Planar_point& u)
   {
     Frame_extents r;
     if(hull_.empty())
       return r;
-    const Packing_point d[4] = { u, { -u.y, u.x }, { -u.x, -u.y }, { u.y, -u.x } };
+    const Planar_point d[4] = { u, { -u.y, u.x }, { -u.x, -u.y }, { u.y, -u.x } };
     for(int k = 0; k < 4; ++k)
       support_[k] = started_ ? advance(support_[k], d[k]) : scan(d[k]);
     started_ = true;
-    const Packing_point& a = hull_[support_[0]]; const Packing_point& b = hull_[support_[2]];
-    const Packing_point& c = hull_[support_[1]]; const Packing_point& e = hull_[support_[3]];
+    const Planar_point& a = hull_[support_[0]]; const Planar_point& b = hull_[support_[2]];
+    const Planar_point& c = hull_[support_[1]]; const Planar_point& e = hull_[support_[3]];
     r.e = { a.x - b.x, a.y - b.y };
     r.g = { c.x - e.x, c.y - e.y };
-    r.width = packing_dot(r.e, u);
-    r.height = packing_dot(r.g, d[1]);
+    r.width = planar_dot(r.e, u);
+    r.height = planar_dot(r.g, d[1]);
     return r;
   }
 
 private:
-  std::size_t scan(const Packing_point& d) const
+  std::size_t scan(const Planar_point& d) const
   {
     std::size_t best = 0;
     for(std::size_t i = 1; i < hull_.size(); ++i)
-      if(packing_dot(hull_[i], d) > packing_dot(hull_[best], d)) best = i;
+      if(planar_dot(hull_[i], d) > planar_dot(hull_[best], d)) best = i;
     return best;
   }
 
   // The bound on steps keeps rounding on nearly flat hulls from looping.
-  std::size_t advance(std::size_t j, const Packing_point& d) const
+  std::size_t advance(std::size_t j, const Planar_point& d) const
   {
     const std::size_t n = hull_.size();
     for(std::size_t step = 0; step < n; ++step)
     {
       const std::size_t next = (j + 1 == n) ? 0 : j + 1;
-      if(!(packing_dot(hull_[next], d) > packing_dot(hull_[j], d)))
+      if(!(planar_dot(hull_[next], d) > planar_dot(hull_[j], d)))
         break;
       j = next;
     }
     return j;
   }
 
-  const std::vector<Packing_point>& hull_;
+  const std::vector<Planar_point>& hull_;
   std::size_t support_[4] = { 0, 0, 0, 0 };
   bool started_ = false;
 };
@@ -194,17 +194,17 @@ private:
 // the quadrant x > 0, y >= 0, sorted counterclockwise (by y), without
 // repeats. A box of minimum area, or of minimum larger side, changes its
 // support vertices only at these directions.
-inline std::vector<Packing_point> hull_edge_directions(const std::vector<Packing_point>& hull)
+inline std::vector<Planar_point> hull_edge_directions(const std::vector<Planar_point>& hull)
 {
-  std::vector<Packing_point> directions;
+  std::vector<Planar_point> directions;
   if(hull.size() < 2)
     return directions;
   directions.reserve(hull.size());
   for(std::size_t i = 0; i < hull.size(); ++i)
   {
-    const Packing_point& a = hull[i];
-    const Packing_point& b = hull[(i + 1) % hull.size()];
-    Packing_point d{ b.x - a.x, b.y - a.y };
+    const Planar_point& a = hull[i];
+    const Planar_point& b = hull[(i + 1) % hull.size()];
+    Planar_point d{ b.x - a.x, b.y - a.y };
     if(d.x == 0. && d.y == 0.)
       continue;
     // Quarter turns clockwise, (x, y) -> (y, -x), are exact.
@@ -212,9 +212,9 @@ inline std::vector<Packing_point> hull_edge_directions(const std::vector<Packing
       d = { d.y, -d.x };
     directions.push_back(normalized(d));
   }
-  std::sort(directions.begin(), directions.end(), [](const Packing_point& a, const Packing_point& b)
+  std::sort(directions.begin(), directions.end(), [](const Planar_point& a, const Planar_point& b)
             { return a.y < b.y || (a.y == b.y && a.x > b.x); });
-  directions.erase(std::unique(directions.begin(), directions.end(), [](const Packing_point& a, const Packing_point& b)
+  directions.erase(std::unique(directions.begin(), directions.end(), [](const Planar_point& a, const Planar_point& b)
                                { return a.x == b.x && a.y == b.y; }),
                    directions.end());
   return directions;
@@ -223,13 +223,13 @@ inline std::vector<Packing_point> hull_edge_directions(const std::vector<Packing
 // The frame (unit vector u) in which the hull has a bounding box of minimum
 // area: one side of such a box contains a hull edge (Freeman & Shapira).
 // Ties keep the first direction.
-inline Packing_point minimum_area_box_direction(const std::vector<Packing_point>& hull)
+inline Planar_point minimum_area_box_direction(const std::vector<Planar_point>& hull)
 {
-  const std::vector<Packing_point> directions = hull_edge_directions(hull);
+  const std::vector<Planar_point> directions = hull_edge_directions(hull);
   Support_sweep sweep(hull);
-  Packing_point best{ 1., 0. };
+  Planar_point best{ 1., 0. };
   double best_area = (std::numeric_limits<double>::max)();
-  for(const Packing_point& u : directions)
+  for(const Planar_point& u : directions)
   {
     const Frame_extents x = sweep(u);
     const double area = x.width * x.height;
@@ -249,15 +249,15 @@ inline Packing_point minimum_area_box_direction(const std::vector<Packing_point>
 // there, and the larger of the two is smallest at an end of the interval or
 // where they cross; the crossing is solved in closed form. Ties keep the
 // first direction found.
-inline Packing_point minimum_square_box_direction(const std::vector<Packing_point>& hull)
+inline Planar_point minimum_square_box_direction(const std::vector<Planar_point>& hull)
 {
-  const std::vector<Packing_point> events = hull_edge_directions(hull);
-  Packing_point best{ 1., 0. };
+  const std::vector<Planar_point> events = hull_edge_directions(hull);
+  Planar_point best{ 1., 0. };
   if(events.empty())
     return best;
   Support_sweep sweep(hull);
   double best_side = (std::numeric_limits<double>::max)();
-  auto consider = [&](const Packing_point& u, double side)
+  auto consider = [&](const Planar_point& u, double side)
   {
     if(side < best_side)
     {
@@ -267,8 +267,8 @@ inline Packing_point minimum_square_box_direction(const std::vector<Packing_poin
   };
   for(std::size_t i = 0; i < events.size(); ++i)
   {
-    const Packing_point& lo = events[i];
-    const Packing_point hi = (i + 1 < events.size()) ? events[i + 1] : quarter_turn(events.front());
+    const Planar_point& lo = events[i];
+    const Planar_point hi = (i + 1 < events.size()) ? events[i + 1] : quarter_turn(events.front());
     const Frame_extents at_lo = sweep(lo);
     consider(lo, (std::max)(at_lo.width, at_lo.height));
 
@@ -278,14 +278,14 @@ inline Packing_point minimum_square_box_direction(const std::vector<Packing_poin
     const double a = mid.e.x - mid.g.y, b = mid.e.y + mid.g.x;
     if(a == 0. && b == 0.)
       continue;
-    Packing_point u = normalized({ b, -a });
-    if(packing_dot(u, { lo.x + hi.x, lo.y + hi.y }) < 0.)
+    Planar_point u = normalized({ b, -a });
+    if(planar_dot(u, { lo.x + hi.x, lo.y + hi.y }) < 0.)
       u = { -u.x, -u.y };
-    const Packing_point origin{ 0., 0. };
-    if(packing_cross(origin, lo, u) >= 0. && packing_cross(origin, u, hi) >= 0.)
+    const Planar_point origin{ 0., 0. };
+    if(planar_cross(origin, lo, u) >= 0. && planar_cross(origin, u, hi) >= 0.)
     {
-      const double width = packing_dot(mid.e, u);
-      const double height = packing_dot(mid.g, quarter_turn(u));
+      const double width = planar_dot(mid.e, u);
+      const double height = planar_dot(mid.g, quarter_turn(u));
       consider(u, (std::max)(width, height));
     }
   }

@@ -7,7 +7,7 @@
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_PARAMETERIZATION_CHART_DISTORTION_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_PARAMETERIZATION_CHART_DISTORTION_H
 
-#include <CGAL/Disk_segmentation/internal/Parameterization/Chart_parameterization.h>
+#include <CGAL/Disk_segmentation/internal/Parameterization/Chart.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Indexed_triangle_mesh.h>
 #include <CGAL/Disk_segmentation/internal/Parameterization/Triangle_distortion.h>
 

@@ -1,5 +1,8 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The merging step on an indexed mesh, and the merge tree's face order
+// (the mesh's or the input's).
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_SEGMENTATION_REGION_MERGING_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_SEGMENTATION_REGION_MERGING_H

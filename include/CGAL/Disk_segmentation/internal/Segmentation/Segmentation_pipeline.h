@@ -1,5 +1,8 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The paper's three steps in a row on an indexed mesh (Voronoi cells,
+// refinement into disks, merging), with their sizes and times.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_SEGMENTATION_SEGMENTATION_PIPELINE_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_SEGMENTATION_SEGMENTATION_PIPELINE_H

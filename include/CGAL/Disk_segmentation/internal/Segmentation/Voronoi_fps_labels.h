@@ -1,5 +1,7 @@
 // Copyright (c) 2026 The Disk_segmentation authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The Voronoi step on a whole indexed mesh: its seeds and every face's cell.
 
 #ifndef CGAL_DISK_SEGMENTATION_INTERNAL_SEGMENTATION_VORONOI_FPS_LABELS_H
 #define CGAL_DISK_SEGMENTATION_INTERNAL_SEGMENTATION_VORONOI_FPS_LABELS_H
