@@ -9,6 +9,7 @@
 
 #include <CGAL/Disk_segmentation/internal/Chart_selection/Border_arcs.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Indexed_triangle_mesh.h>
+#include <CGAL/Disk_segmentation/internal/Mesh/Round_stamps.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Vertex_faces.h>
 
 #include <algorithm>
@@ -33,8 +34,8 @@ public:
   explicit Border_path_search(const Region_borders& borders)
     : m_(borders.mesh()), borders_(borders), vertex_faces_(borders.vertex_faces()),
       distance_(m_.number_of_vertices(), 0.), length_(m_.number_of_vertices(), 0.),
-      previous_(m_.number_of_vertices(), no_index), vertex_stamp_(m_.number_of_vertices(), 0),
-      band_stamp_(m_.number_of_vertices(), 0)
+      previous_(m_.number_of_vertices(), no_index), vertex_stamp_(m_.number_of_vertices()),
+      band_stamp_(m_.number_of_vertices())
   {}
 
   static constexpr int band_rings = 2;
@@ -50,7 +51,7 @@ public:
   {
     const Index s = arc.vertices.front(), t = arc.vertices.back(), a = arc.a, b = arc.b;
     const std::uint32_t band = mark_band(labels, arc);
-    const std::uint32_t stamp = next_vertex_stamp();
+    const std::uint32_t stamp = vertex_stamp_.next_round();
     typedef std::pair<double, Index> Entry;  // cost so far, vertex
     std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry> > open;
     auto straight = [&](Index v) { return Indexed_triangle_mesh::distance(m_.points[v], m_.points[t]); };
@@ -163,12 +164,7 @@ private:
   // the change of curvature the segmentation put it on. Returns the mark.
   std::uint32_t mark_band(const std::vector<Index>& labels, const Border_arc& arc)
   {
-    if(++band_clock_ == 0)
-    {
-      std::fill(band_stamp_.begin(), band_stamp_.end(), 0);
-      band_clock_ = 1;
-    }
-    const std::uint32_t mark = band_clock_;
+    const std::uint32_t mark = band_stamp_.next_round();
     std::vector<Index> ring(arc.vertices), next;
     for(Index v : ring)
       band_stamp_[v] = mark;
@@ -204,23 +200,12 @@ private:
     return true;
   }
 
-  std::uint32_t next_vertex_stamp()
-  {
-    if(++vertex_clock_ == 0)
-    {
-      std::fill(vertex_stamp_.begin(), vertex_stamp_.end(), 0);
-      vertex_clock_ = 1;
-    }
-    return vertex_clock_;
-  }
-
   const Indexed_triangle_mesh& m_;
   const Region_borders& borders_;
   const Vertex_faces& vertex_faces_;
   std::vector<double> distance_, length_;
   std::vector<Index> previous_;
-  std::vector<std::uint32_t> vertex_stamp_, band_stamp_;
-  std::uint32_t vertex_clock_ = 0, band_clock_ = 0;
+  Round_stamps vertex_stamp_, band_stamp_;
 };
 
 } // namespace internal

@@ -11,6 +11,7 @@
 #include <CGAL/Disk_segmentation/internal/Chart_selection/Border_arcs.h>
 #include <CGAL/Disk_segmentation/internal/Chart_selection/Border_path_search.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Indexed_triangle_mesh.h>
+#include <CGAL/Disk_segmentation/internal/Mesh/Round_stamps.h>
 #include <CGAL/Disk_segmentation/internal/Mesh/Region_topology.h>
 
 #include <algorithm>
@@ -38,7 +39,7 @@ class Border_router
 {
 public:
   explicit Border_router(const Indexed_triangle_mesh& m)
-    : m_(m), borders_(m), path_search_(borders_), sides_(borders_), vertex_stamp_(m.number_of_vertices(), 0)
+    : m_(m), borders_(m), path_search_(borders_), sides_(borders_), vertex_stamp_(m.number_of_vertices())
   {}
   // Its parts refer to each other.
   Border_router(const Border_router&) = delete;
@@ -154,7 +155,7 @@ private:
   template <typename Visit>
   void for_vertices_of(const Arc_change& change, const Visit& visit)
   {
-    const std::uint32_t stamp = next_vertex_stamp();
+    const std::uint32_t stamp = vertex_stamp_.next_round();
     for(const auto& moved : change.old_labels)
       for(Index v : m_.corners[moved.first])
         if(vertex_stamp_[v] != stamp)
@@ -200,22 +201,11 @@ private:
     return out;
   }
 
-  std::uint32_t next_vertex_stamp()
-  {
-    if(++vertex_clock_ == 0)
-    {
-      std::fill(vertex_stamp_.begin(), vertex_stamp_.end(), 0);
-      vertex_clock_ = 1;
-    }
-    return vertex_clock_;
-  }
-
   const Indexed_triangle_mesh& m_;
   Region_borders borders_;
   Border_path_search path_search_;
   Arc_sides sides_;
-  std::vector<std::uint32_t> vertex_stamp_;  // of for_vertices_of()
-  std::uint32_t vertex_clock_ = 0;
+  Round_stamps vertex_stamp_;  // of for_vertices_of()
   std::vector<std::vector<Index> > members_;
   std::unordered_map<std::uint64_t, std::ptrdiff_t> shared_vertices_;  // per pair of regions (pair_key())
   std::vector<Index> around_;  // scratch of count_pairs_around()
